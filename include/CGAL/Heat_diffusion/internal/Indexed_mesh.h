@@ -1,0 +1,221 @@
+// Copyright (c) 2026 The CGAL Heat_diffusion developers.
+// SPDX-License-Identifier: LGPL-3.0-or-later
+
+#ifndef CGAL_HEAT_DIFFUSION_INTERNAL_INDEXED_MESH_H
+#define CGAL_HEAT_DIFFUSION_INTERNAL_INDEXED_MESH_H
+
+#include <CGAL/boost/graph/helpers.h>
+#include <CGAL/boost/graph/iterator.h>
+#include <CGAL/number_utils.h>
+
+#include <Eigen/Core>
+#include <Eigen/Geometry>
+
+#include <array>
+#include <cmath>
+#include <cstddef>
+#include <limits>
+#include <sstream>
+#include <stdexcept>
+#include <string>
+#include <vector>
+
+namespace CGAL {
+namespace Heat_diffusion {
+namespace internal {
+
+// Throws std::invalid_argument with the package prefix, so that every message of
+// the package says where it comes from.
+[[noreturn]] inline void throw_invalid_input(const std::string& what)
+{
+  throw std::invalid_argument("CGAL::Heat_diffusion: " + what);
+}
+
+// A validated, array-based copy of a triangle mesh, in which all numerical work of
+// the package is done (in double, whatever the kernel of the input).
+//
+// Positions are stored in a normalised frame, p = (x - center) * scale, where scale
+// is the power of two that brings the bounding-box diagonal into [0.5, 1). Every
+// quantity the package computes is invariant under translation and uniform scaling,
+// so this changes no result, but it lets meshes with coordinates of 1e300 or 1e-300
+// be processed without overflow or underflow, and a power of two is exact.
+struct Indexed_mesh
+{
+  std::vector<Eigen::Vector3d> points;                 // normalised frame
+  std::vector<std::array<std::size_t, 3> > triangles;  // consistently oriented
+  Eigen::Vector3d center = Eigen::Vector3d::Zero();    // in user coordinates
+  double scale = 1.;                                   // user length * scale = normalised length
+
+  // One-ring fans in compressed rows: the neighbours of vertex i are
+  // fan[fan_begin[i] .. fan_begin[i+1]), ordered so that consecutive neighbours
+  // (u_k, u_k+1) span the incident triangle (u_k, i, u_k+1). A closed fan also has the
+  // triangle (u_last, i, u_0); an open (boundary) fan has not.
+  std::vector<std::size_t> fan_begin;
+  std::vector<std::size_t> fan;
+  std::vector<unsigned char> fan_is_closed;
+
+  std::size_t number_of_vertices() const { return points.size(); }
+  std::size_t degree(std::size_t i) const { return fan_begin[i + 1] - fan_begin[i]; }
+
+  Eigen::Vector3d to_user_frame(const Eigen::Vector3d& p) const { return p / scale + center; }
+};
+
+// Builds the indexed copy of `tm`, and rejects what the package cannot process with
+// an exception that names the element and the problem: a non-triangle face, a
+// non-finite coordinate, a zero-area face, an isolated vertex, a non-manifold vertex.
+// Vertex numbers in messages and in the arrays are those of `vim`.
+template <typename TriangleMesh, typename VertexPointMap, typename VertexIndexMap>
+Indexed_mesh make_indexed_mesh(const TriangleMesh& tm, VertexPointMap vpm, VertexIndexMap vim)
+{
+  typedef boost::graph_traits<TriangleMesh> GT;
+  typedef typename GT::halfedge_descriptor halfedge_descriptor;
+
+  Indexed_mesh mesh;
+  const std::size_t n = static_cast<std::size_t>(num_vertices(tm));
+  mesh.points.resize(n);
+  std::vector<unsigned char> seen(n, 0);
+
+  // User coordinates, checked for finiteness, and their bounding box.
+  Eigen::Vector3d lo = Eigen::Vector3d::Constant(std::numeric_limits<double>::infinity());
+  Eigen::Vector3d hi = -lo;
+  for(auto v : vertices(tm))
+  {
+    const std::size_t i = static_cast<std::size_t>(get(vim, v));
+    if(i >= n || seen[i])
+      throw_invalid_input("the vertex index map is not a bijection onto [0, num_vertices)");
+    seen[i] = 1;
+    const auto& p = get(vpm, v);
+    const Eigen::Vector3d x(CGAL::to_double(p.x()), CGAL::to_double(p.y()), CGAL::to_double(p.z()));
+    if(!x.allFinite())
+    {
+      std::ostringstream os;
+      os << "vertex " << i << " has a non-finite coordinate (" << x.transpose() << ")";
+      throw_invalid_input(os.str());
+    }
+    mesh.points[i] = x;
+    lo = lo.cwiseMin(x);
+    hi = hi.cwiseMax(x);
+  }
+  if(n == 0)
+    return mesh;
+
+  // Halves first, so that coordinates near the largest double do not overflow.
+  mesh.center = 0.5 * lo + 0.5 * hi;
+  const Eigen::Vector3d half_extent = 0.5 * hi - 0.5 * lo;
+  const double half_diagonal = half_extent.stableNorm();
+  if(half_diagonal > 0)
+  {
+    int exponent = 0;
+    std::frexp(half_diagonal, &exponent);  // half_diagonal in [2^(e-1), 2^e)
+    const double half_scale = std::ldexp(1., -exponent);
+    for(Eigen::Vector3d& p : mesh.points)
+      p = (0.5 * p - 0.5 * mesh.center) * half_scale;  // = (p - center) * scale
+    mesh.scale = 0.5 * half_scale;  // diagonal * scale = half_diagonal * half_scale, in [0.5, 1)
+  }
+  else
+    for(Eigen::Vector3d& p : mesh.points)
+      p.setZero();
+
+  // Triangles.
+  mesh.triangles.reserve(static_cast<std::size_t>(num_faces(tm)));
+  std::size_t face_number = 0;
+  for(auto f : faces(tm))
+  {
+    std::array<std::size_t, 3> t;
+    std::size_t k = 0;
+    for(halfedge_descriptor h : halfedges_around_face(halfedge(f, tm), tm))
+    {
+      if(k < 3)
+        t[k] = static_cast<std::size_t>(get(vim, target(h, tm)));
+      ++k;
+    }
+    if(k != 3)
+    {
+      std::ostringstream os;
+      os << "face " << face_number << " has " << k << " vertices; the package works on triangle meshes"
+         << " (CGAL::Polygon_mesh_processing::triangulate_faces() triangulates a polygon mesh)";
+      throw_invalid_input(os.str());
+    }
+    const Eigen::Vector3d cross =
+        (mesh.points[t[1]] - mesh.points[t[0]]).cross(mesh.points[t[2]] - mesh.points[t[0]]);
+    if(!(cross.squaredNorm() > 0))
+    {
+      std::ostringstream os;
+      os << "face " << face_number << " (vertices " << t[0] << ", " << t[1] << ", " << t[2]
+         << ") has zero area; CGAL::Polygon_mesh_processing::remove_degenerate_faces() removes such faces";
+      throw_invalid_input(os.str());
+    }
+    mesh.triangles.push_back(t);
+    ++face_number;
+  }
+
+  // Fans. The number of halfedges pointing to a vertex tells whether the cycle
+  // around it sees all of its incident edges (a manifold vertex) or only one of
+  // several umbrellas (a non-manifold vertex).
+  std::vector<std::size_t> incoming(n, 0);
+  for(halfedge_descriptor h : halfedges(tm))
+    ++incoming[static_cast<std::size_t>(get(vim, target(h, tm)))];
+
+  mesh.fan_begin.assign(n + 1, 0);
+  mesh.fan_is_closed.assign(n, 1);
+  mesh.fan.reserve(static_cast<std::size_t>(num_halfedges(tm)));
+  std::vector<halfedge_descriptor> cycle;
+  for(auto v : vertices(tm))
+  {
+    const std::size_t i = static_cast<std::size_t>(get(vim, v));
+    const halfedge_descriptor h0 = halfedge(v, tm);
+    if(incoming[i] == 0 || h0 == GT::null_halfedge())
+    {
+      std::ostringstream os;
+      os << "vertex " << i << " is isolated (it has no incident face);"
+         << " CGAL::Polygon_mesh_processing::remove_isolated_vertices() removes such vertices";
+      throw_invalid_input(os.str());
+    }
+    cycle.clear();
+    std::size_t border_count = 0;
+    for(halfedge_descriptor h : halfedges_around_target(h0, tm))
+    {
+      border_count += is_border(h, tm) ? 1 : 0;
+      cycle.push_back(h);
+    }
+    if(cycle.size() != incoming[i] || border_count > 1)
+    {
+      std::ostringstream os;
+      os << "vertex " << i << " is non-manifold (its incident faces form several fans);"
+         << " CGAL::Polygon_mesh_processing::duplicate_non_manifold_vertices() splits it";
+      throw_invalid_input(os.str());
+    }
+    mesh.fan_is_closed[i] = border_count == 0;
+    mesh.fan_begin[i + 1] = cycle.size();
+  }
+  for(std::size_t i = 0; i < n; ++i)
+    mesh.fan_begin[i + 1] += mesh.fan_begin[i];
+  mesh.fan.resize(mesh.fan_begin[n]);
+  for(auto v : vertices(tm))
+  {
+    const std::size_t i = static_cast<std::size_t>(get(vim, v));
+    cycle.clear();
+    std::size_t border_position = 0;
+    for(halfedge_descriptor h : halfedges_around_target(halfedge(v, tm), tm))
+    {
+      if(is_border(h, tm))
+        border_position = cycle.size();
+      cycle.push_back(h);
+    }
+    // For h_k around the target, h_k+1 = opposite(next(h_k)) and face(h_k) is the
+    // triangle (source(h_k), v, source(h_k+1)). An open fan starts right after the
+    // border halfedge, so that it ends with that halfedge's source.
+    const std::size_t d = cycle.size();
+    const std::size_t start = mesh.fan_is_closed[i] ? 0 : border_position + 1;
+    for(std::size_t k = 0; k < d; ++k)
+      mesh.fan[mesh.fan_begin[i] + k] =
+          static_cast<std::size_t>(get(vim, source(cycle[(start + k) % d], tm)));
+  }
+  return mesh;
+}
+
+} // namespace internal
+} // namespace Heat_diffusion
+} // namespace CGAL
+
+#endif // CGAL_HEAT_DIFFUSION_INTERNAL_INDEXED_MESH_H

@@ -1,0 +1,40 @@
+// Copyright (c) 2026 The CGAL Heat_diffusion developers.
+// SPDX-License-Identifier: LGPL-3.0-or-later
+
+#ifndef CGAL_HEAT_DIFFUSION_INTERNAL_PARALLEL_FOR_H
+#define CGAL_HEAT_DIFFUSION_INTERNAL_PARALLEL_FOR_H
+
+#include <cstddef>
+
+#ifdef CGAL_LINKED_WITH_TBB
+#include <tbb/blocked_range.h>
+#include <tbb/parallel_for.h>
+#endif
+
+namespace CGAL {
+namespace Heat_diffusion {
+namespace internal {
+
+// Calls f(i) for i in [0, n), in parallel when CGAL is linked with TBB. The
+// callers write to disjoint slots only, so the sequential and the parallel runs
+// give bit-identical results.
+template <typename Function>
+void parallel_for(std::size_t n, const Function& f)
+{
+#ifdef CGAL_LINKED_WITH_TBB
+  tbb::parallel_for(tbb::blocked_range<std::size_t>(0, n, 1024),
+                    [&](const tbb::blocked_range<std::size_t>& range) {
+                      for(std::size_t i = range.begin(); i != range.end(); ++i)
+                        f(i);
+                    });
+#else
+  for(std::size_t i = 0; i < n; ++i)
+    f(i);
+#endif
+}
+
+} // namespace internal
+} // namespace Heat_diffusion
+} // namespace CGAL
+
+#endif // CGAL_HEAT_DIFFUSION_INTERNAL_PARALLEL_FOR_H

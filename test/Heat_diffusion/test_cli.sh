@@ -1,0 +1,63 @@
+#!/usr/bin/env bash
+# The command-line tool as a user meets it: outputs, exit codes, messages.
+# Usage: test_cli.sh HEAT_DIFFUSION_BINARY DATA_DIR WORK_DIR
+set -u
+tool=$1 data=$2 work=$3
+rm -rf "$work" && mkdir -p "$work" && cd "$work" || exit 1
+passed=0 failed=0
+pass() { passed=$((passed + 1)); }
+fail() { failed=$((failed + 1)); echo "FAILED: $*"; }
+
+# expect CODE PATTERN -- COMMAND...: exit status CODE and stderr+stdout matching PATTERN
+expect() {
+  local code=$1 pattern=$2; shift 3
+  local out status
+  out=$("$@" 2>&1); status=$?
+  if [ "$status" -ne "$code" ]; then fail "$* -> exit $status, expected $code: $out"; return; fi
+  if [ -n "$pattern" ] && ! grep -qE -- "$pattern" <<<"$out"; then fail "$* -> output lacks '$pattern': $out"; return; fi
+  pass
+}
+
+# success, JSON summary, PLY with the NS property and colours
+expect 0 '"vertices": 6475' -- "$tool" ncc "$data/fandisk.off" -o fandisk_ns.ply --json --quiet
+"$tool" ncc "$data/fandisk.off" -o fandisk_ns.ply --json --quiet > summary.json
+if python3 -c 'import json,sys; d=json.load(open("summary.json")); assert d["ns"]["min"] < 0 < d["ns"]["max"]; assert all(v >= 0 for v in d["timings_ms"].values())'; then pass; else fail "JSON summary"; fi
+if head -c 600 fandisk_ns.ply | grep -aq "property double ns" && head -c 600 fandisk_ns.ply | grep -aq "property uchar red"; then pass; else fail "PLY header lacks ns or colours"; fi
+[ ! -e fandisk_ns.ply.partial ] && pass || fail "temporary file left behind"
+# default output name, other normals, other formats, polygon faces
+expect 0 'written to elephant_ns.ply' -- "$tool" ncc "$data/elephant.off"
+[ -s elephant_ns.ply ] && pass || fail "default output missing"
+expect 0 '"normals": "pmp"' -- "$tool" ncc "$data/elephant.off" --normals pmp --json -o e.ply
+expect 0 '"triangulated_faces": 6' -- "$tool" ncc "$data/cube_quad.off" --json -o cube.ply
+expect 0 '"vertices": ' -- "$tool" ncc fandisk_ns.ply --json -o reread.ply
+# help
+expect 0 'Usage: heat_diffusion COMMAND' -- "$tool" --help
+expect 0 'Normal-Controlled Coordinates' -- "$tool" ncc --help
+# bad usage: exit 2
+expect 2 'missing COMMAND' -- "$tool"
+expect 2 "unknown command 'frobnicate'" -- "$tool" frobnicate
+expect 2 'unknown option --bogus' -- "$tool" ncc "$data/fandisk.off" --bogus
+expect 2 'option -o needs a value' -- "$tool" ncc "$data/fandisk.off" -o
+expect 2 'exactly one MESH' -- "$tool" ncc
+expect 2 "--normals must be" -- "$tool" ncc "$data/fandisk.off" --normals magic
+# bad input: exit 1, the message names the file (CGAL's OFF reader rejects 'nan' itself;
+# non-finite coordinates that reach the API are rejected there, see the C++ tests)
+expect 1 'missing.off: no such file' -- "$tool" ncc missing.off
+printf 'OFF\n3 1 0\n0 0 0\n1 0\n' > truncated.off
+expect 1 'truncated.off: cannot read' -- "$tool" ncc truncated.off
+head -c 300 /dev/urandom > garbage.off 2>/dev/null || printf 'garbage' > garbage.off
+expect 1 'garbage.off' -- "$tool" ncc garbage.off
+printf 'OFF\n4 2 0\n0 0 0\n1 0 0\n1 1 0\n0 1 nan\n3 0 1 2\n3 0 2 3\n' > nan.off
+expect 1 'nan.off: cannot read' -- "$tool" ncc nan.off
+printf 'OFF\n0 0 0\n' > empty.off
+expect 1 'empty.off: ' -- "$tool" ncc empty.off
+# never overwrite the input; a failed run leaves no output
+cp "$data/elephant.off" mine.off
+expect 1 'refusing to overwrite the input' -- "$tool" ncc mine.off -o mine.off
+expect 1 'refusing to overwrite the input' -- "$tool" ncc mine.off -o ./sub/../mine.off
+cmp -s mine.off "$data/elephant.off" && pass || fail "input was modified"
+expect 1 '' -- "$tool" ncc nan.off -o should_not_exist.ply
+[ ! -e should_not_exist.ply ] && [ ! -e should_not_exist.ply.partial ] && pass || fail "failed run left an output"
+
+echo "test_cli: $passed passed, $failed failed"
+[ "$failed" -eq 0 ]

@@ -1,0 +1,322 @@
+// Copyright (c) 2026 The CGAL Heat_diffusion developers.
+// SPDX-License-Identifier: LGPL-3.0-or-later
+//
+// What every subcommand of the heat_diffusion tool shares: option parsing, reading a
+// mesh, writing coloured PLY files atomically, the colour map, JSON summaries, timers.
+
+#ifndef CGAL_HEAT_DIFFUSION_TOOLS_CLI_SUPPORT_H
+#define CGAL_HEAT_DIFFUSION_TOOLS_CLI_SUPPORT_H
+
+#include <CGAL/IO/Color.h>
+#include <CGAL/Polygon_mesh_processing/IO/polygon_mesh_io.h>
+#include <CGAL/Polygon_mesh_processing/triangulate_faces.h>
+#include <CGAL/Surface_mesh.h>
+
+#include <algorithm>
+#include <chrono>
+#include <cmath>
+#include <cstdio>
+#include <filesystem>
+#include <fstream>
+#include <iomanip>
+#include <map>
+#include <sstream>
+#include <stdexcept>
+#include <string>
+#include <utility>
+#include <vector>
+
+namespace heat_diffusion_cli {
+
+namespace fs = std::filesystem;
+
+// Exit codes of the tool.
+enum Exit_code { success = 0, bad_input = 1, bad_usage = 2 };
+
+// Thrown for a wrong command line (exit 2) ...
+struct Usage_error : std::runtime_error
+{
+  using std::runtime_error::runtime_error;
+};
+// ... and for input the tool cannot process or output it cannot write (exit 1).
+struct Input_error : std::runtime_error
+{
+  using std::runtime_error::runtime_error;
+};
+
+// Options of one subcommand: positional arguments, flags and valued options, each
+// declared before parsing so that unknown options are usage errors.
+class Arguments
+{
+public:
+  Arguments(std::vector<std::string> flags, std::vector<std::string> valued)
+    : flags_(std::move(flags)), valued_(std::move(valued))
+  {}
+
+  void parse(int argc, char** argv, int first)
+  {
+    for(int i = first; i < argc; ++i)
+    {
+      const std::string a = argv[i];
+      if(a.size() > 1 && a[0] == '-' && !is_number(a))
+      {
+        if(std::find(flags_.begin(), flags_.end(), a) != flags_.end())
+          set_flags_.push_back(a);
+        else if(std::find(valued_.begin(), valued_.end(), a) != valued_.end())
+        {
+          if(i + 1 >= argc)
+            throw Usage_error("option " + a + " needs a value");
+          values_[a] = argv[++i];
+        }
+        else
+          throw Usage_error("unknown option " + a);
+      }
+      else
+        positional_.push_back(a);
+    }
+  }
+
+  bool flag(const std::string& name) const
+  {
+    return std::find(set_flags_.begin(), set_flags_.end(), name) != set_flags_.end();
+  }
+  bool has(const std::string& name) const { return values_.count(name) != 0; }
+  std::string value(const std::string& name, const std::string& fallback) const
+  {
+    auto it = values_.find(name);
+    return it == values_.end() ? fallback : it->second;
+  }
+  const std::vector<std::string>& positional() const { return positional_; }
+
+private:
+  static bool is_number(const std::string& s)
+  {
+    char* end = nullptr;
+    std::strtod(s.c_str(), &end);
+    return end != s.c_str() && *end == '\0';
+  }
+
+  std::vector<std::string> flags_, valued_, set_flags_, positional_;
+  std::map<std::string, std::string> values_;
+};
+
+// Wall-clock timings of the stages of a run, in milliseconds, in order.
+class Stage_timer
+{
+public:
+  void start() { begin_ = std::chrono::steady_clock::now(); }
+  void stop(const std::string& stage)
+  {
+    const auto end = std::chrono::steady_clock::now();
+    stages_.emplace_back(stage, std::chrono::duration<double, std::milli>(end - begin_).count());
+    begin_ = end;
+  }
+  const std::vector<std::pair<std::string, double> >& stages() const { return stages_; }
+
+private:
+  std::chrono::steady_clock::time_point begin_ = std::chrono::steady_clock::now();
+  std::vector<std::pair<std::string, double> > stages_;
+};
+
+// A JSON object written member by member; values are numbers, strings or nested
+// objects given as already formatted JSON.
+class Json_object
+{
+public:
+  Json_object& number(const std::string& key, double value)
+  {
+    std::ostringstream os;
+    if(std::isfinite(value))
+      os << std::setprecision(17) << value;
+    else
+      os << "null";  // JSON has no NaN or infinity
+    return raw(key, os.str());
+  }
+  Json_object& integer(const std::string& key, long long value) { return raw(key, std::to_string(value)); }
+  Json_object& boolean(const std::string& key, bool value) { return raw(key, value ? "true" : "false"); }
+  Json_object& string(const std::string& key, const std::string& value) { return raw(key, quote(value)); }
+  Json_object& object(const std::string& key, const Json_object& value) { return raw(key, value.str()); }
+  Json_object& raw(const std::string& key, const std::string& json)
+  {
+    members_.emplace_back(key, json);
+    return *this;
+  }
+  std::string str() const
+  {
+    std::string s = "{";
+    for(std::size_t i = 0; i < members_.size(); ++i)
+      s += (i ? ", " : "") + quote(members_[i].first) + ": " + members_[i].second;
+    return s + "}";
+  }
+  static std::string quote(const std::string& s)
+  {
+    std::string q = "\"";
+    for(char c : s)
+    {
+      if(c == '"' || c == '\\')
+        q += std::string("\\") + c;
+      else if(static_cast<unsigned char>(c) < 0x20)
+      {
+        char buffer[8];
+        std::snprintf(buffer, sizeof buffer, "\\u%04x", c);
+        q += buffer;
+      }
+      else
+        q += c;
+    }
+    return q + "\"";
+  }
+
+private:
+  std::vector<std::pair<std::string, std::string> > members_;
+};
+
+inline Json_object timings_json(const Stage_timer& timer)
+{
+  Json_object o;
+  for(const auto& stage : timer.stages())
+    o.number(stage.first, stage.second);
+  return o;
+}
+
+// Reads any format CGAL::IO::read_polygon_mesh reads (OFF, OBJ, PLY, STL, VTP, GOCAD,
+// ...), repairing the polygon soup on the way, and triangulates polygon faces.
+// Returns the number of faces that were triangulated.
+template <typename Mesh>
+std::size_t read_triangle_mesh(const std::string& path, Mesh& mesh)
+{
+  std::error_code ec;
+  if(!fs::is_regular_file(path, ec))
+    throw Input_error(path + ": no such file");
+  if(!CGAL::IO::read_polygon_mesh(path, mesh))
+    throw Input_error(path + ": cannot read a polygon mesh (unknown format, unreadable or broken file, "
+                             "or a polygon soup that is not a manifold mesh)");
+  if(is_empty(mesh) || faces(mesh).size() == 0)
+    throw Input_error(path + ": the mesh has no faces");
+  std::size_t polygons = 0;
+  for(auto f : faces(mesh))
+    polygons += CGAL::is_triangle(halfedge(f, mesh), mesh) ? 0 : 1;
+  if(polygons > 0 && !CGAL::Polygon_mesh_processing::triangulate_faces(mesh))
+    throw Input_error(path + ": cannot triangulate its polygon faces");
+  return polygons;
+}
+
+// The output path must not name the input: the tool never overwrites its input.
+inline void check_output_path(const std::string& output, const std::vector<std::string>& inputs)
+{
+  std::error_code ec;
+  for(const std::string& input : inputs)
+    if(fs::absolute(output, ec).lexically_normal() == fs::absolute(input, ec).lexically_normal() ||
+       (fs::exists(output, ec) && fs::equivalent(output, input, ec)))
+      throw Input_error(output + ": refusing to overwrite the input file");
+}
+
+// Writes through `write(std::ostream&)` into a temporary file next to `path`, then
+// renames it: a failed run leaves no half-written output.
+template <typename Writer>
+void write_atomically(const std::string& path, const Writer& write)
+{
+  const fs::path target(path);
+  std::error_code ec;
+  if(target.has_parent_path() && !fs::exists(target.parent_path(), ec))
+    fs::create_directories(target.parent_path(), ec);
+  const fs::path temporary = target.string() + ".partial";
+  {
+    std::ofstream os(temporary, std::ios::binary);
+    if(!os || !write(os) || !os.flush())
+    {
+      fs::remove(temporary, ec);
+      throw Input_error(path + ": cannot write the output file");
+    }
+  }
+  fs::rename(temporary, target, ec);
+  if(ec)
+  {
+    fs::remove(temporary, ec);
+    throw Input_error(path + ": cannot write the output file (" + ec.message() + ")");
+  }
+}
+
+// A diverging colour map (Moreland's cool-warm): blue for negative values (concave
+// for the NS), white at 0, red for positive ones (convex), symmetric about 0.
+inline CGAL::IO::Color diverging_color(double value, double half_range)
+{
+  static const double blue[3] = {59, 76, 192}, white[3] = {221, 221, 221}, red[3] = {180, 4, 38};
+  double x = half_range > 0 ? value / half_range : 0.;
+  x = std::isfinite(x) ? (std::max)(-1., (std::min)(1., x)) : 0.;
+  const double* end = x < 0 ? blue : red;
+  const double a = std::abs(x);
+  unsigned char rgb[3];
+  for(int k = 0; k < 3; ++k)
+    rgb[k] = static_cast<unsigned char>(std::lround((1 - a) * white[k] + a * end[k]));
+  return CGAL::IO::Color(rgb[0], rgb[1], rgb[2]);
+}
+
+// The half range of the colour map: the 98th percentile of |value|, so that a few
+// extreme vertices do not wash out the picture.
+inline double robust_half_range(std::vector<double> values)
+{
+  for(double& v : values)
+    v = std::abs(v);
+  if(values.empty())
+    return 1.;
+  const std::size_t k = static_cast<std::size_t>(0.98 * double(values.size() - 1));
+  std::nth_element(values.begin(), values.begin() + std::ptrdiff_t(k), values.end());
+  return values[k] > 0 ? values[k] : 1.;
+}
+
+struct Field_statistics
+{
+  double min = 0, max = 0, mean = 0;
+  Json_object json() const
+  {
+    Json_object o;
+    o.number("min", min).number("max", max).number("mean", mean);
+    return o;
+  }
+};
+
+inline Field_statistics statistics(const std::vector<double>& values)
+{
+  Field_statistics s;
+  if(values.empty())
+    return s;
+  s.min = *std::min_element(values.begin(), values.end());
+  s.max = *std::max_element(values.begin(), values.end());
+  double sum = 0;
+  for(double v : values)
+    sum += v;
+  s.mean = sum / double(values.size());
+  return s;
+}
+
+// Writes `mesh` as a binary PLY with the given per-vertex scalar fields as double
+// properties, and the first one also as the per-vertex colour.
+template <typename Point>
+void write_fields_ply(const std::string& path, const CGAL::Surface_mesh<Point>& input,
+                      const std::vector<std::pair<std::string, std::vector<double> > >& fields)
+{
+  typedef CGAL::Surface_mesh<Point> Mesh;
+  Mesh mesh = input;  // the property maps are added to a copy
+  for(const auto& field : fields)
+  {
+    auto map = mesh.template add_property_map<typename Mesh::Vertex_index, double>("v:" + field.first, 0.).first;
+    for(auto v : mesh.vertices())
+      map[v] = field.second[v.idx()];
+  }
+  if(!fields.empty())
+  {
+    const double half_range = robust_half_range(fields.front().second);
+    auto colors = mesh.template add_property_map<typename Mesh::Vertex_index, CGAL::IO::Color>("v:color").first;
+    for(auto v : mesh.vertices())
+      colors[v] = diverging_color(fields.front().second[v.idx()], half_range);
+  }
+  write_atomically(path, [&](std::ostream& os) {
+    return CGAL::IO::write_PLY(os, mesh, "written by CGAL Heat_diffusion",
+                               CGAL::parameters::use_binary_mode(true));
+  });
+}
+
+} // namespace heat_diffusion_cli
+
+#endif // CGAL_HEAT_DIFFUSION_TOOLS_CLI_SUPPORT_H
