@@ -25,6 +25,8 @@ enum number_of_eigenpairs_t { number_of_eigenpairs };
 enum number_of_steps_t { number_of_steps };
 enum anchor_weight_t { anchor_weight };
 enum vertex_normal_rule_t { vertex_normal_rule };
+enum scale_invariant_kernel_t { scale_invariant_kernel };
+enum progress_callback_t { progress_callback };
 
 } // namespace internal_np
 /// \endcond
@@ -63,6 +65,12 @@ CGAL_HEAT_DIFFUSION_NAMED_PARAMETER(number_of_steps_t, number_of_steps)
 CGAL_HEAT_DIFFUSION_NAMED_PARAMETER(anchor_weight_t, anchor_weight)
 /// Rule that computes vertex normals, a model of `VertexNormalRule`.
 CGAL_HEAT_DIFFUSION_NAMED_PARAMETER(vertex_normal_rule_t, vertex_normal_rule)
+
+/// `true` for the scale-invariant kernel of eq. 14 instead of eq. 13.
+CGAL_HEAT_DIFFUSION_NAMED_PARAMETER(scale_invariant_kernel_t, scale_invariant_kernel)
+/// A callable `bool(double fraction_done)` called during long computations (the
+/// eigen solve); returning `false` cancels them with an exception.
+CGAL_HEAT_DIFFUSION_NAMED_PARAMETER(progress_callback_t, progress_callback)
 
 #undef CGAL_HEAT_DIFFUSION_NAMED_PARAMETER
 

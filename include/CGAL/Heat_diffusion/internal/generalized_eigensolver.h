@@ -23,7 +23,6 @@
 #include <cmath>
 #include <cstring>
 #include <functional>
-#include <limits>
 #include <numeric>
 #include <sstream>
 #include <stdexcept>
@@ -102,11 +101,12 @@ inline std::runtime_error not_positive_definite_error(double shift)
 class Cholmod_llt
   : public Eigen::CholmodBase<Sparse_matrix, Eigen::Lower, Cholmod_llt>
 {
-  using Base = Eigen::CholmodBase<Sparse_matrix, Eigen::Lower, Cholmod_llt>;
-
 public:
   explicit Cholmod_llt(bool supernodal)
   {
+    // A non-positive-definite K is reported through info()/minor; keep CHOLMOD from
+    // also printing its own warning on stdout.
+    m_cholmod.print = 0;
     // Always LL^T (final_ll), never LDL^T, so that the factor is R itself.
     m_cholmod.final_asis = supernodal ? 1 : 0;
     m_cholmod.final_ll = 1;
@@ -261,9 +261,9 @@ public:
     Eigen::Map<Eigen::VectorXd> y(y_out, m_B.rows());
     m_tmp = x;
     m_factor.solve_upper_in_place(m_tmp.data(), 1);
-    // Column-major on purpose: Eigen would multi-thread a row-major product under
-    // OpenMP, and a fork/join per Lanczos step costs more than it saves (fandisk got
-    // 3x slower with -fopenmp).
+    // Column-major on purpose: Eigen multi-threads a row-major product under OpenMP,
+    // and a fork/join per Lanczos step costs more than it saves on 2 cores (fandisk,
+    // m = 150, -fopenmp: 0.36 s -> 1.4-3.7 s with a row-major B).
     y.noalias() = m_B * m_tmp;
     m_factor.solve_lower_in_place(y.data(), 1);
     if(m_on_application)
@@ -440,6 +440,9 @@ compute_smallest_generalized_eigenpairs(const Eigen::SparseMatrix<double>& L,
   // (one zero eigenvalue per connected component) can spoil that, so measure it.
   Eigen::MatrixXd BPhi = permuted_B * Phi;
   Eigen::MatrixXd gram = Phi.transpose() * BPhi;
+  if(!(gram.diagonal().minCoeff() > 0.) || !gram.allFinite())
+    throw std::runtime_error("Heat_diffusion: the eigenvectors have no positive B-norm; "
+                             "B must be symmetric positive definite.");
   const Eigen::VectorXd inv_norms = gram.diagonal().cwiseSqrt().cwiseInverse();
   Phi = Phi * inv_norms.asDiagonal();
   BPhi = BPhi * inv_norms.asDiagonal();

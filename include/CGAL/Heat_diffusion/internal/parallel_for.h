@@ -8,6 +8,7 @@
 
 #ifdef CGAL_LINKED_WITH_TBB
 #include <tbb/blocked_range.h>
+#include <tbb/enumerable_thread_specific.h>
 #include <tbb/parallel_for.h>
 #endif
 
@@ -30,6 +31,27 @@ void parallel_for(std::size_t n, const Function& f)
 #else
   for(std::size_t i = 0; i < n; ++i)
     f(i);
+#endif
+}
+
+// As parallel_for, with a scratch object per thread, made by make_scratch() and
+// passed to f(i, scratch) (e.g. the marks of a breadth-first search).
+template <typename MakeScratch, typename Function>
+void parallel_for_with_scratch(std::size_t n, const MakeScratch& make_scratch, const Function& f)
+{
+#ifdef CGAL_LINKED_WITH_TBB
+  typedef decltype(make_scratch()) Scratch;
+  tbb::enumerable_thread_specific<Scratch> scratches(make_scratch);
+  tbb::parallel_for(tbb::blocked_range<std::size_t>(0, n, 256),
+                    [&](const tbb::blocked_range<std::size_t>& range) {
+                      Scratch& scratch = scratches.local();
+                      for(std::size_t i = range.begin(); i != range.end(); ++i)
+                        f(i, scratch);
+                    });
+#else
+  auto scratch = make_scratch();
+  for(std::size_t i = 0; i < n; ++i)
+    f(i, scratch);
 #endif
 }
 
