@@ -59,5 +59,25 @@ cmp -s mine.off "$data/elephant.off" && pass || fail "input was modified"
 expect 1 '' -- "$tool" ncc nan.off -o should_not_exist.ply
 [ ! -e should_not_exist.ply ] && [ ! -e should_not_exist.ply.partial ] && pass || fail "failed run left an output"
 
+# diffuse: outputs per k, conserved total heat, field files, bad parameters
+expect 0 '"collapsed": 0' -- "$tool" diffuse "$data/fandisk.off" --sigma 1 -m 60 -k 0,5,20 -o fd --json --quiet
+"$tool" diffuse "$data/fandisk.off" --sigma 1 -m 60 -k 0,5,20 -o fd --json --quiet > diffuse.json
+if python3 -c '
+import json; d = json.load(open("diffuse.json")); h = d["total_heat"]
+assert set(h) == {"0", "5", "20"}, h
+assert all(abs(h[k] - h["0"]) <= 1e-12 * max(1.0, abs(h["0"])) * 100 for k in h), h'; then pass; else fail "diffuse JSON / heat conservation"; fi
+for k in 0 5 20; do [ -s fd_k$k.ply ] && pass || fail "fd_k$k.ply missing"; done
+awk 'BEGIN { srand(1); for(i = 0; i < 2775; ++i) print rand() }' > field.txt
+expect 0 '"field": "field.txt"' -- "$tool" diffuse "$data/elephant.off" --field field.txt -m 40 -k 3 -o ef --json --quiet
+printf '1\n2\n' > short.txt
+expect 1 'short.txt: has 2 values, the mesh has 2775 vertices' -- "$tool" diffuse "$data/elephant.off" --field short.txt
+expect 2 '--sigma must be a number > 0' -- "$tool" diffuse "$data/elephant.off" --sigma 0
+expect 2 '--time must be a number > 0' -- "$tool" diffuse "$data/elephant.off" --time -1
+expect 2 '-k takes a comma-separated list' -- "$tool" diffuse "$data/elephant.off" -k 1,-2
+expect 2 '-m must be a number >= 1' -- "$tool" diffuse "$data/elephant.off" -m 0
+expect 0 'Usage: heat_diffusion diffuse' -- "$tool" diffuse --help
+cp field.txt ef_k0.ply
+expect 1 'refusing to overwrite the input' -- "$tool" diffuse "$data/elephant.off" --field ef_k0.ply -o ef -k 0
+
 echo "test_cli: $passed passed, $failed failed"
 [ "$failed" -eq 0 ]

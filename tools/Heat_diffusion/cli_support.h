@@ -13,6 +13,8 @@
 #include <CGAL/Surface_mesh.h>
 
 #include <algorithm>
+#include <cstdlib>
+#include <iostream>
 #include <chrono>
 #include <cmath>
 #include <cstdio>
@@ -171,6 +173,68 @@ private:
   std::vector<std::pair<std::string, std::string> > members_;
 };
 
+// Parses a comma-separated list of non-negative integers ("0,10,40").
+inline std::vector<std::size_t> parse_steps(const std::string& text)
+{
+  std::vector<std::size_t> steps;
+  std::stringstream ss(text);
+  std::string item;
+  while(std::getline(ss, item, ','))
+  {
+    char* end = nullptr;
+    const long long k = std::strtoll(item.c_str(), &end, 10);
+    if(item.empty() || *end != '\0' || k < 0 || k > 1000000)
+      throw Usage_error("-k takes a comma-separated list of steps between 0 and 1000000, not '" + text + "'");
+    steps.push_back(std::size_t(k));
+  }
+  if(steps.empty())
+    throw Usage_error("-k needs at least one step");
+  return steps;
+}
+
+// Parses a number of an option, with its valid range.
+inline double parse_number(const std::string& option, const std::string& text, double lowest, bool strict)
+{
+  char* end = nullptr;
+  const double x = std::strtod(text.c_str(), &end);
+  if(text.empty() || *end != '\0' || !std::isfinite(x) || (strict ? !(x > lowest) : !(x >= lowest)))
+    throw Usage_error(option + " must be a number " + (strict ? "> " : ">= ") + std::to_string(lowest) + ", not '" +
+                      text + "'");
+  return x;
+}
+
+// A progress bar on stderr, shown only when stderr is a terminal.
+class Progress_bar
+{
+public:
+  Progress_bar(std::string label, bool enabled) : label_(std::move(label)), enabled_(enabled) {}
+  ~Progress_bar()
+  {
+    if(shown_)
+      std::cerr << "\r" << std::string(label_.size() + 40, ' ') << "\r" << std::flush;
+  }
+  bool operator()(double fraction)
+  {
+    if(!enabled_)
+      return true;
+    const int percent = int(100 * (std::max)(0., (std::min)(1., fraction)));
+    if(percent != last_)
+    {
+      last_ = percent;
+      shown_ = true;
+      std::cerr << "\r" << label_ << " [" << std::string(std::size_t(percent / 5), '#')
+                << std::string(std::size_t(20 - percent / 5), ' ') << "] " << percent << "%" << std::flush;
+    }
+    return true;
+  }
+
+private:
+  std::string label_;
+  bool enabled_;
+  bool shown_ = false;
+  int last_ = -1;
+};
+
 inline Json_object timings_json(const Stage_timer& timer)
 {
   Json_object o;
@@ -291,10 +355,12 @@ inline Field_statistics statistics(const std::vector<double>& values)
 }
 
 // Writes `mesh` as a binary PLY with the given per-vertex scalar fields as double
-// properties, and the first one also as the per-vertex colour.
+// properties, and the first one also as the per-vertex colour, saturated at
+// `half_range` (default: robust_half_range of that field).
 template <typename Point>
 void write_fields_ply(const std::string& path, const CGAL::Surface_mesh<Point>& input,
-                      const std::vector<std::pair<std::string, std::vector<double> > >& fields)
+                      const std::vector<std::pair<std::string, std::vector<double> > >& fields,
+                      double half_range = 0.)
 {
   typedef CGAL::Surface_mesh<Point> Mesh;
   Mesh mesh = input;  // the property maps are added to a copy
@@ -306,7 +372,8 @@ void write_fields_ply(const std::string& path, const CGAL::Surface_mesh<Point>& 
   }
   if(!fields.empty())
   {
-    const double half_range = robust_half_range(fields.front().second);
+    if(!(half_range > 0))
+      half_range = robust_half_range(fields.front().second);
     auto colors = mesh.template add_property_map<typename Mesh::Vertex_index, CGAL::IO::Color>("v:color").first;
     for(auto v : mesh.vertices())
       colors[v] = diverging_color(fields.front().second[v.idx()], half_range);
