@@ -7,6 +7,8 @@
 #ifndef CGAL_HEAT_DIFFUSION_TOOLS_CLI_SUPPORT_H
 #define CGAL_HEAT_DIFFUSION_TOOLS_CLI_SUPPORT_H
 
+#include <CGAL/Exact_predicates_inexact_constructions_kernel.h>
+#include <CGAL/Heat_diffusion/parameters.h>
 #include <CGAL/IO/Color.h>
 #include <CGAL/Polygon_mesh_processing/IO/polygon_mesh_io.h>
 #include <CGAL/Polygon_mesh_processing/triangulate_faces.h>
@@ -31,6 +33,11 @@
 namespace heat_diffusion_cli {
 
 namespace fs = std::filesystem;
+namespace HD = CGAL::Heat_diffusion;
+
+// The mesh type of the tool.
+typedef CGAL::Exact_predicates_inexact_constructions_kernel Kernel;
+typedef CGAL::Surface_mesh<Kernel::Point_3> Mesh;
 
 // Exit codes of the tool.
 enum Exit_code { success = 0, bad_input = 1, bad_usage = 2 };
@@ -382,6 +389,12 @@ void write_fields_ply(const std::string& path, const CGAL::Surface_mesh<Point>& 
     return CGAL::IO::write_PLY(os, mesh, "written by CGAL Heat_diffusion",
                                CGAL::parameters::use_binary_mode(true));
   });
+}
+
+// The default output name: the input's stem with `suffix`, in the current folder.
+inline std::string default_output(const std::string& input, const std::string& suffix)
+{
+  return fs::path(input).stem().string() + suffix;
 }
 
 } // namespace heat_diffusion_cli
