@@ -79,5 +79,58 @@ expect 0 'Usage: heat_diffusion diffuse' -- "$tool" diffuse --help
 cp field.txt ef_k0.ply
 expect 1 'refusing to overwrite the input' -- "$tool" diffuse "$data/elephant.off" --field ef_k0.ply -o ef -k 0
 
+# features: one PLY per k with the labels and colours, JSON vertex lists that match the labels
+expect 0 '"collapsed": 0' -- "$tool" features "$data/fandisk.off" --sigma 1 -k 0,10 -o feat --json --quiet
+"$tool" features "$data/fandisk.off" --sigma 1 -k 0,10 -o feat --json --quiet > features.json
+if python3 -c '
+import json; d = json.load(open("features.json")); f = d["features"]
+assert set(f) == {"0", "10"}, f
+assert all(len(f[k]["convex"]) > 0 for k in f), f
+assert all(not set(f[k]["convex"]) & set(f[k]["concave"]) for k in f), f
+assert all(0 <= i < 6475 for k in f for s in ("convex", "concave") for i in f[k][s])'; then pass; else fail "features JSON"; fi
+for k in 0 10; do head -c 600 feat_k$k.ply | grep -aq "property double feature" && pass || fail "feat_k$k.ply lacks the feature property"; done
+expect 0 'heat regions collapsed' -- "$tool" features "$data/fandisk.off" -k 10 -o feat01
+expect 2 '--c must be in \[0, 1\]' -- "$tool" features "$data/elephant.off" --c 1.5
+expect 2 '--c must be a number >= 0' -- "$tool" features "$data/elephant.off" --c -1
+expect 1 'short.txt: has 2 values' -- "$tool" features "$data/elephant.off" --field short.txt
+expect 0 'Usage: heat_diffusion features' -- "$tool" features --help
+cp "$data/elephant.off" feat_k0.ply
+expect 1 'refusing to overwrite the input' -- "$tool" features feat_k0.ply -o feat -k 0
+# hks: maxima only (the HKS is positive), the accuracy bound, the warning below it
+expect 0 '"maxima": \[[0-9]' -- "$tool" hks "$data/fandisk.off" -t 20 -o hks.ply --json --quiet
+expect 0 'below 4 ln 10 / lambda_m' -- "$tool" hks "$data/fandisk.off" -t 5 -o hks5.ply
+head -c 600 hks.ply | grep -aq "property double hks" && pass || fail "hks.ply lacks the hks property"
+expect 2 'give the time once' -- "$tool" hks "$data/elephant.off" -t 1 --time 2
+expect 2 '-t must be a number > 0' -- "$tool" hks "$data/elephant.off" -t 0
+expect 0 'Usage: heat_diffusion hks' -- "$tool" hks --help
+# decompose: L bands + residual, every band of sum 0
+expect 0 '"steps_per_level": 2' -- "$tool" decompose "$data/elephant.off" --levels 4 --steps-per-level 2 -o dec --json --quiet
+"$tool" decompose "$data/elephant.off" --levels 4 --steps-per-level 2 -o dec --json --quiet > decompose.json
+if python3 -c '
+import json; d = json.load(open("decompose.json")); b = d["bands"]
+assert set(b) == {"1", "2", "3", "4"}, b
+assert all(b[j]["relative_sum"] <= 1e-12 for j in b), b
+assert abs(d["residual_heat"] - d["total_heat"]) <= 1e-12 * abs(d["total_heat"]) * 100, d'; then pass; else fail "decompose JSON"; fi
+for f in dec_band1 dec_band2 dec_band3 dec_band4 dec_residual; do [ -s $f.ply ] && pass || fail "$f.ply missing"; done
+expect 2 '--levels must be an integer' -- "$tool" decompose "$data/elephant.off" --levels 2.5
+expect 2 '--steps-per-level must be a number >= 1' -- "$tool" decompose "$data/elephant.off" --steps-per-level 0
+expect 0 'Usage: heat_diffusion decompose' -- "$tool" decompose --help
+# enhance: the enhancement raises the NS variance, the smoothing lowers it, weights 1 keep the mesh
+"$tool" enhance "$data/elephant.off" --weights 1,3,3 -o enhanced.off --json --quiet > enhance.json &&
+  python3 -c 'import json; d = json.load(open("enhance.json")); assert d["ns_variance_after"] > d["ns_variance_before"], d' &&
+  pass || fail "enhance 1,3,3 does not raise the NS variance"
+"$tool" enhance "$data/elephant.off" --weights 0,0,1 -o smoothed.ply --json --quiet > smooth.json &&
+  python3 -c 'import json; d = json.load(open("smooth.json")); assert d["ns_variance_after"] < d["ns_variance_before"], d' &&
+  pass || fail "enhance 0,0,1 does not lower the NS variance"
+expect 0 '"max_displacement_relative": [0-9.]*e-1[0-9]' -- "$tool" enhance "$data/elephant.off" --weights 1,1 -o same.obj --json --quiet
+[ -s enhanced.off ] && [ -s smoothed.ply ] && [ -s same.obj ] && pass || fail "enhance outputs missing"
+expect 2 '--weights takes a comma-separated list' -- "$tool" enhance "$data/elephant.off" --weights 1,x
+expect 2 'must end in .off, .obj, .ply or .stl' -- "$tool" enhance "$data/elephant.off" -o out.vtp
+expect 2 '--anchor-weight must be a number > 0' -- "$tool" enhance "$data/elephant.off" --anchor-weight 0
+cp "$data/elephant.off" mine2.off
+expect 1 'refusing to overwrite the input' -- "$tool" enhance mine2.off -o mine2.off
+cmp -s mine2.off "$data/elephant.off" && pass || fail "enhance modified its input"
+expect 0 'Usage: heat_diffusion enhance' -- "$tool" enhance --help
+
 echo "test_cli: $passed passed, $failed failed"
 [ "$failed" -eq 0 ]

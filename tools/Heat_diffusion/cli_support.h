@@ -15,6 +15,9 @@
 #include <CGAL/Surface_mesh.h>
 
 #include <algorithm>
+#include <cctype>
+#include <cstdint>
+#include <limits>
 #include <cstdlib>
 #include <iostream>
 #include <chrono>
@@ -250,6 +253,173 @@ inline Json_object timings_json(const Stage_timer& timer)
   return o;
 }
 
+// Checks an OFF stream of `size` bytes before CGAL's reader sees it, and throws
+// Input_error (the message names the element) where that reader would not fail
+// cleanly: counts larger than the file can hold (a 40-byte file declaring a face of
+// 2e9 vertices made it allocate 16 GB), negative, fractional or non-finite counts and
+// indices (converted to std::size_t or int without a check: undefined behaviour),
+// colours out of range, and the variants it mis-reads (texture coordinates "ST",
+// homogeneous "4", n-dimensional "n"). Supported: [C][N]OFF, ASCII or BINARY.
+// Leaves `is` at an unspecified position.
+inline void check_off_stream(std::istream& is, std::uintmax_t size)
+{
+  auto fail = [](const std::string& what) { throw Input_error("broken OFF file: " + what); };
+  const double byte_bound = double(size);
+  // CGAL's header: '#' comment lines, then a keyword [ST][C][N][4][n]OFF (or SKEL).
+  char c = 0;
+  while((is >> c) && c == '#')
+    is.ignore(std::numeric_limits<std::streamsize>::max(), '\n');
+  if(!is)
+    fail("no OFF header");
+  std::string keyword(1, c);
+  while(keyword.size() < 41 && is.get(c) && std::isalnum(static_cast<unsigned char>(c)))
+    keyword += c;
+  if(keyword.size() < 3 || keyword.compare(keyword.size() - 3, 3, "OFF") != 0)
+    return;  // not an OFF header: CGAL's reader rejects it at once
+  const std::string prefix = keyword.substr(0, keyword.size() - 3);
+  if(prefix != "" && prefix != "C" && prefix != "N" && prefix != "CN")
+    fail("the variant '" + keyword + "' is not supported (OFF, COFF, NOFF, CNOFF are)");
+  const bool colors = prefix.find('C') != std::string::npos, normals = prefix.find('N') != std::string::npos;
+  while((is >> c) && c == '#')
+    is.ignore(std::numeric_limits<std::streamsize>::max(), '\n');
+  if(!is)
+    fail("no vertex and face counts");
+  bool binary = false;
+  if(!std::isdigit(static_cast<unsigned char>(c)))
+  {
+    std::string word(1, c);
+    while(word.size() < 41 && is.get(c) && std::isalnum(static_cast<unsigned char>(c)))
+      word += c;
+    if(word != "BINARY")
+      fail("'" + word + "' where the vertex count should be");
+    if(c != '\n')
+      is.ignore(std::numeric_limits<std::streamsize>::max(), '\n');
+    if(colors)
+      fail("binary OFF with colours is not supported");
+    binary = true;
+  }
+  else
+    is.putback(c);
+
+  // Reads one count of the header.
+  auto read_count = [&](const char* what, double lowest, double highest) {
+    double x = 0;
+    if(binary)
+    {
+      unsigned char b[4];
+      if(!is.read(reinterpret_cast<char*>(b), 4))
+        fail(std::string("truncated header (no ") + what + ")");
+      x = double(std::int32_t(std::uint32_t(b[0]) << 24 | std::uint32_t(b[1]) << 16 | std::uint32_t(b[2]) << 8 |
+                              std::uint32_t(b[3])));
+    }
+    else
+    {
+      long long k = 0;
+      if(!(is >> k))
+        fail(std::string("no ") + what + " in the header");
+      x = double(k);
+    }
+    if(!(x >= lowest && x <= highest))
+    {
+      std::ostringstream os;
+      os << "the " << what << " " << x << " is out of range (" << lowest << " to " << highest
+         << " for a file of " << size << " bytes)";
+      fail(os.str());
+    }
+    return std::size_t(x);
+  };
+  const std::size_t nv = read_count("vertex count", 0, byte_bound / 6);
+  const std::size_t nf = read_count("face count", 0, byte_bound / 2);
+  read_count("edge count", -1e9, 1e9);
+
+  // The entries of the next non-comment line, as CGAL's scanner reads them.
+  std::string line;
+  std::vector<double> entries;
+  auto next_line = [&](const std::string& element) {
+    while((is >> c) && c == '#')
+      is.ignore(std::numeric_limits<std::streamsize>::max(), '\n');
+    if(!is)
+      fail("truncated: " + element + " is missing");
+    is.putback(c);
+    std::getline(is, line);
+    line = line.substr(0, line.find('#'));
+    std::istringstream entry_stream(line);
+    entries.clear();
+    double d;
+    while(entry_stream >> d)
+      entries.push_back(d);
+  };
+  auto is_integer_in = [](double x, double lowest, double highest) {
+    return x >= lowest && x <= highest && std::floor(x) == x;
+  };
+  // CGAL reads 1 (an index into its colour map), 3 or 4 colour values: integers in
+  // [0, 255] or fractions in [0, 1]; once an element had a colour, it reads one for
+  // every later element of that kind.
+  auto check_color = [&](std::size_t first, const std::string& element, bool& seen) {
+    const std::size_t count = entries.size() - first;
+    bool ok = (count == 0 && !seen) || count == 1 || count == 3 || count == 4;
+    seen = seen || count > 0;
+    if(ok && count == 1)
+      ok = is_integer_in(entries[first], 0, 148);
+    if(ok && count >= 3)
+    {
+      bool integers = true;
+      for(std::size_t k = first; k < first + 3; ++k)
+        integers = integers && std::floor(entries[k]) == entries[k];
+      for(std::size_t k = first; k < first + 3; ++k)
+        ok = ok && (integers ? is_integer_in(entries[k], 0, 255) : entries[k] >= 0 && entries[k] <= 1);
+    }
+    if(!ok)
+      fail(element + " has an invalid colour");
+  };
+
+  if(binary)
+  {
+    // big-endian float32 coordinates (and normals), then per face an int32 size and indices
+    const std::size_t floats_per_vertex = normals ? 6 : 3;
+    if(!is.ignore(std::streamsize(nv * floats_per_vertex * 4)) || std::size_t(is.gcount()) != nv * floats_per_vertex * 4)
+      fail("truncated: the file ends among its vertices");
+    for(std::size_t f = 0; f < nf; ++f)
+    {
+      const std::string element = "face " + std::to_string(f);
+      const std::size_t k = read_count((element + " size").c_str(), 0, byte_bound / 4);
+      for(std::size_t j = 0; j < k; ++j)
+        read_count((element + " vertex index").c_str(), 0, double(nv) - 1);
+    }
+    return;
+  }
+  const std::size_t coordinates = normals ? 6 : 3;
+  bool vertex_colors = false, face_colors = false;
+  for(std::size_t v = 0; v < nv; ++v)
+  {
+    const std::string element = "vertex " + std::to_string(v);
+    next_line(element);
+    if(entries.size() < coordinates)
+      fail(element + " has " + std::to_string(entries.size()) + " numbers, expected " + std::to_string(coordinates) +
+           " (a non-finite coordinate such as 'nan' ends the numbers of a line)");
+    if(colors)
+      check_color(coordinates, element, vertex_colors);
+  }
+  for(std::size_t f = 0; f < nf; ++f)
+  {
+    const std::string element = "face " + std::to_string(f);
+    next_line(element);
+    if(entries.empty() || !is_integer_in(entries[0], 0, double(entries.size()) - 1))
+      fail(element + " declares " + (entries.empty() ? std::string("no") : std::to_string(entries[0])) +
+           " vertices, but its line has " + std::to_string(entries.empty() ? 0 : entries.size() - 1) + " indices");
+    const std::size_t k = std::size_t(entries[0]);
+    for(std::size_t j = 1; j <= k; ++j)
+      if(!is_integer_in(entries[j], 0, double(nv) - 1))
+      {
+        std::ostringstream os;
+        os << element << " has the vertex index " << entries[j] << ", not one of 0.." << (nv == 0 ? 0 : nv - 1);
+        fail(nv == 0 ? element + " has a vertex index, but the file has no vertices" : os.str());
+      }
+    if(colors)
+      check_color(k + 1, element, face_colors);
+  }
+}
+
 // Reads any format CGAL::IO::read_polygon_mesh reads (OFF, OBJ, PLY, STL, VTP, GOCAD,
 // ...), repairing the polygon soup on the way, and triangulates polygon faces.
 // Returns the number of faces that were triangulated.
@@ -259,7 +429,31 @@ std::size_t read_triangle_mesh(const std::string& path, Mesh& mesh)
   std::error_code ec;
   if(!fs::is_regular_file(path, ec))
     throw Input_error(path + ": no such file");
-  if(!CGAL::IO::read_polygon_mesh(path, mesh))
+  std::string extension = fs::path(path).extension().string();
+  std::transform(extension.begin(), extension.end(), extension.begin(),
+                 [](unsigned char ch) { return char(std::tolower(ch)); });
+  if(extension == ".off")
+  {
+    std::ifstream is(path, std::ios::binary);
+    try
+    {
+      check_off_stream(is, fs::file_size(path, ec));
+    }
+    catch(const Input_error& e)
+    {
+      throw Input_error(path + ": " + e.what());
+    }
+  }
+  bool read = false;
+  try
+  {
+    read = CGAL::IO::read_polygon_mesh(path, mesh);
+  }
+  catch(const std::exception& e)  // std::bad_alloc, CGAL's assertions
+  {
+    throw Input_error(path + ": cannot read a polygon mesh (" + e.what() + ")");
+  }
+  if(!read)
     throw Input_error(path + ": cannot read a polygon mesh (unknown format, unreadable or broken file, "
                              "or a polygon soup that is not a manifold mesh)");
   if(is_empty(mesh) || faces(mesh).size() == 0)
@@ -283,19 +477,38 @@ inline void check_output_path(const std::string& output, const std::vector<std::
 }
 
 // Writes through `write(std::ostream&)` into a temporary file next to `path`, then
-// renames it: a failed run leaves no half-written output.
+// renames it: a failed run leaves no half-written output. The temporary name is
+// one no file has (an input may be called OUT.partial), and the target must be a
+// regular file if it exists: renaming over /dev/stdout, run as root, would replace
+// the device with a file.
 template <typename Writer>
 void write_atomically(const std::string& path, const Writer& write)
 {
   const fs::path target(path);
   std::error_code ec;
+  if(fs::exists(target, ec) && !fs::is_regular_file(target, ec))
+    throw Input_error(path + ": cannot write the output file (it exists and is not a regular file)");
   if(target.has_parent_path() && !fs::exists(target.parent_path(), ec))
     fs::create_directories(target.parent_path(), ec);
-  const fs::path temporary = target.string() + ".partial";
+  fs::path temporary = target.string() + ".partial";
+  for(int k = 1; fs::exists(fs::symlink_status(temporary, ec)); ++k)
+    temporary = target.string() + ".partial" + std::to_string(k);
   {
     std::ofstream os(temporary, std::ios::binary);
-    if(!os || !write(os) || !os.flush())
+    bool written = false;
+    try
     {
+      written = os && write(os) && os.flush();
+    }
+    catch(...)
+    {
+      os.close();
+      fs::remove(temporary, ec);
+      throw;
+    }
+    if(!written)
+    {
+      os.close();
       fs::remove(temporary, ec);
       throw Input_error(path + ": cannot write the output file");
     }

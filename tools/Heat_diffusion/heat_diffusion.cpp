@@ -6,6 +6,10 @@
 
 // Each subcommand lives in command_<name>.h and defines run_<name>(argc, argv).
 #include "command_diffuse.h"
+#include "command_decompose.h"
+#include "command_enhance.h"
+#include "command_features.h"
+#include "command_hks.h"
 #include "command_ncc.h"
 
 #include <exception>
@@ -25,6 +29,10 @@ const char* const general_help =
     "Commands:\n"
     "  ncc MESH     Normal-Controlled Coordinates and the Normal Signature (NS) of a mesh\n"
     "  diffuse MESH Anisotropic, heat-conserving multi-scale diffusion of the NS or of a field\n"
+    "  features MESH  Convex and concave features of the diffused NS (or a field) at scales k\n"
+    "  hks MESH       The heat kernel signature and its maxima (the paper's baseline)\n"
+    "  decompose MESH Detail bands and residual of the NS (or a field), each band of sum 0\n"
+    "  enhance MESH   Shape editing: reweighted NS detail bands, e.g. --weights 1,3,3\n"
     "\n"
     "MESH is any file CGAL::IO::read_polygon_mesh reads (OFF, OBJ, PLY, STL, VTP, TS, ...);\n"
     "polygon faces are triangulated. Exit status: 0 success, 1 bad input (the message names\n"
@@ -47,6 +55,14 @@ int main(int argc, char** argv)
       return run_ncc(argc, argv);
     if(command == "diffuse")
       return run_diffuse(argc, argv);
+    if(command == "features")
+      return run_features(argc, argv);
+    if(command == "hks")
+      return run_hks(argc, argv);
+    if(command == "decompose")
+      return run_decompose(argc, argv);
+    if(command == "enhance")
+      return run_enhance(argc, argv);
     throw Usage_error(command.empty() ? "missing COMMAND" : "unknown command '" + command + "'");
   }
   catch(const Usage_error& e)

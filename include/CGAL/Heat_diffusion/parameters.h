@@ -27,6 +27,9 @@ enum anchor_weight_t { anchor_weight };
 enum vertex_normal_rule_t { vertex_normal_rule };
 enum scale_invariant_kernel_t { scale_invariant_kernel };
 enum progress_callback_t { progress_callback };
+enum feature_threshold_t { feature_threshold };
+enum steps_per_level_t { steps_per_level };
+enum coarse_vertex_count_t { coarse_vertex_count };
 
 } // namespace internal_np
 /// \endcond
@@ -71,6 +74,15 @@ CGAL_HEAT_DIFFUSION_NAMED_PARAMETER(scale_invariant_kernel_t, scale_invariant_ke
 /// A callable `bool(double fraction_done)` called during long computations (the
 /// eigen solve); returning `false` cancels them with an exception.
 CGAL_HEAT_DIFFUSION_NAMED_PARAMETER(progress_callback_t, progress_callback)
+
+/// The threshold c of the feature criterion \f$ F^k(i) > c \max F^k \f$ (paper, section 7).
+CGAL_HEAT_DIFFUSION_NAMED_PARAMETER(feature_threshold_t, feature_threshold)
+/// Number of diffusion steps that make one level of a hierarchical decomposition (paper, eq. 24).
+CGAL_HEAT_DIFFUSION_NAMED_PARAMETER(steps_per_level_t, steps_per_level)
+
+/// Vertex count of the coarse level on which the eigenpairs are computed (paper,
+/// eq. 21); 0 computes them on the mesh itself. See `Edge_weighted_heat_kernel`.
+CGAL_HEAT_DIFFUSION_NAMED_PARAMETER(coarse_vertex_count_t, coarse_vertex_count)
 
 #undef CGAL_HEAT_DIFFUSION_NAMED_PARAMETER
 

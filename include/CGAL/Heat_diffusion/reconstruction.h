@@ -114,8 +114,11 @@ void reconstruct_from_normal_signature(TriangleMesh& tm, const VertexNSMap& ns_m
   if(n == 0)
     return;
 
+  // The target normals: the user's, or else the current ones, already computed.
+  const bool user_normals = !parameters::is_default_parameter<NamedParameters,
+                                                              CGAL::internal_np::vertex_normal_map_t>::value;
   const std::vector<Eigen::Vector3d> target_normals =
-      internal::vertex_normals(mesh, tm, vpm, vim, gt, np);
+      user_normals ? internal::vertex_normals(mesh, tm, vpm, vim, gt, np) : ncc.data().normals;
 
   const Eigen::Index size = static_cast<Eigen::Index>(n);
   Eigen::MatrixXd target(size, 3), anchors(size, 3);

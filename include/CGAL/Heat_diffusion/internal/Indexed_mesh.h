@@ -45,6 +45,7 @@ struct Indexed_mesh
   std::vector<std::array<std::size_t, 3> > triangles;  // consistently oriented
   Eigen::Vector3d center = Eigen::Vector3d::Zero();    // in user coordinates
   double scale = 1.;                                   // user length * scale = normalised length
+  int scale_exponent = 0;                              // scale = 2^scale_exponent (scale may overflow, this not)
 
   // One-ring fans in compressed rows: the neighbours of vertex i are
   // fan[fan_begin[i] .. fan_begin[i+1]), ordered so that consecutive neighbours
@@ -57,7 +58,12 @@ struct Indexed_mesh
   std::size_t number_of_vertices() const { return points.size(); }
   std::size_t degree(std::size_t i) const { return fan_begin[i + 1] - fan_begin[i]; }
 
-  Eigen::Vector3d to_user_frame(const Eigen::Vector3d& p) const { return p / scale + center; }
+  Eigen::Vector3d to_user_frame(const Eigen::Vector3d& p) const
+  {
+    return Eigen::Vector3d(std::ldexp(p.x(), -scale_exponent), std::ldexp(p.y(), -scale_exponent),
+                           std::ldexp(p.z(), -scale_exponent)) +
+           center;
+  }
 };
 
 // Builds the indexed copy of `tm`, and rejects what the package cannot process with
@@ -102,15 +108,25 @@ Indexed_mesh make_indexed_mesh(const TriangleMesh& tm, VertexPointMap vpm, Verte
   // Halves first, so that coordinates near the largest double do not overflow.
   mesh.center = 0.5 * lo + 0.5 * hi;
   const Eigen::Vector3d half_extent = 0.5 * hi - 0.5 * lo;
-  const double half_diagonal = half_extent.stableNorm();
-  if(half_diagonal > 0)
+  const double largest_half_extent = half_extent.maxCoeff();
+  if(largest_half_extent > 0)
   {
-    int exponent = 0;
-    std::frexp(half_diagonal, &exponent);  // half_diagonal in [2^(e-1), 2^e)
-    const double half_scale = std::ldexp(1., -exponent);
+    // The half diagonal itself can overflow (half extents of 1.7e308), so its
+    // exponent is that of the largest half extent plus that of the diagonal of the
+    // box scaled by a power of two to that extent.
+    int exponent = 0, diagonal_exponent = 0;
+    std::frexp(largest_half_extent, &exponent);
+    // std::ldexp scales exactly, without overflow for tiny (subnormal) extents.
+    auto times_power_of_two = [](const Eigen::Vector3d& x, int e) {
+      return Eigen::Vector3d(std::ldexp(x.x(), e), std::ldexp(x.y(), e), std::ldexp(x.z(), e));
+    };
+    std::frexp(times_power_of_two(half_extent, -exponent).norm(), &diagonal_exponent);
+    exponent += diagonal_exponent;  // half_diagonal in [2^(e-1), 2^e)
     for(Eigen::Vector3d& p : mesh.points)
-      p = (0.5 * p - 0.5 * mesh.center) * half_scale;  // = (p - center) * scale
-    mesh.scale = 0.5 * half_scale;  // diagonal * scale = half_diagonal * half_scale, in [0.5, 1)
+      p = times_power_of_two(0.5 * p - 0.5 * mesh.center, -exponent);  // = (p - center) * scale
+    // diagonal * scale = half_diagonal * 2^-e, in [0.5, 1)
+    mesh.scale_exponent = -1 - exponent;
+    mesh.scale = std::ldexp(1., mesh.scale_exponent);
   }
   else
     for(Eigen::Vector3d& p : mesh.points)

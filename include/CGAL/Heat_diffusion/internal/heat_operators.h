@@ -38,7 +38,10 @@ inline double ncc_edge_weight(const Ncc_data& data, std::size_t i, std::size_t j
   return std::exp(-(di - dj).squaredNorm() / (sigma * sigma));
 }
 
-inline Heat_operators assemble_heat_operators(const Indexed_mesh& mesh, const Ncc_data& data, double sigma)
+// `target_area`: the total area after rescaling; by default the number of vertices.
+// The coarse level uses the fine mesh's vertex count, so that t keeps its meaning.
+inline Heat_operators assemble_heat_operators(const Indexed_mesh& mesh, const Ncc_data& data, double sigma,
+                                              double target_area = 0.)
 {
   const std::size_t n = mesh.number_of_vertices();
   Heat_operators ops;
@@ -51,7 +54,7 @@ inline Heat_operators assemble_heat_operators(const Indexed_mesh& mesh, const Nc
     face_areas[f] = 0.5 * (mesh.points[t[1]] - mesh.points[t[0]]).cross(mesh.points[t[2]] - mesh.points[t[0]]).norm();
     total_area += face_areas[f];
   }
-  ops.area_scale = double(n) / total_area;
+  ops.area_scale = (target_area > 0 ? target_area : double(n)) / total_area;
 
   // B (eq. 11): B_ij = (|t_r| + |t_s|) / 12 over the faces sharing edge ij, and
   // B_ii = (sum of incident face areas) / 6; assembled face by face.

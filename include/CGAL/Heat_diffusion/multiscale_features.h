@@ -1,0 +1,329 @@
+// Copyright (c) 2026 The CGAL Heat_diffusion developers.
+// SPDX-License-Identifier: LGPL-3.0-or-later
+//
+// Multi-scale feature detection on a diffused scalar field: paper, section 7.
+
+#ifndef CGAL_HEAT_DIFFUSION_MULTISCALE_FEATURES_H
+#define CGAL_HEAT_DIFFUSION_MULTISCALE_FEATURES_H
+
+#include <CGAL/Heat_diffusion/Anisotropic_heat_diffusion.h>
+#include <CGAL/Heat_diffusion/parameters.h>
+
+#include <CGAL/boost/graph/named_params_helper.h>
+
+#include <Eigen/Core>
+
+#include <algorithm>
+#include <cmath>
+#include <sstream>
+#include <utility>
+#include <vector>
+
+namespace CGAL {
+namespace Heat_diffusion {
+
+/// \ingroup PkgHeatDiffusionApplications
+/// The features of a field at one scale k, as `detect_multiscale_features()` returns
+/// them for several scales at once. Both lists are sorted by vertex index.
+template <typename VertexDescriptor>
+struct Features_at_scale
+{
+  std::size_t number_of_steps = 0;          ///< the scale k of \f$ F^k \f$
+  std::vector<VertexDescriptor> convex;     ///< the strict 2-ring maxima above the threshold
+  std::vector<VertexDescriptor> concave;    ///< the strict 2-ring minima below the threshold
+};
+
+/// \cond SKIP_IN_MANUAL
+namespace internal {
+
+// The one-rings of a mesh by vertex index, in compressed rows: the neighbours of
+// vertex i are neighbours[begin[i] .. begin[i+1]).
+struct Vertex_adjacency
+{
+  std::vector<std::size_t> begin;
+  std::vector<std::size_t> neighbours;
+};
+
+// From the edges, so that vertices of any valence, on boundaries or not, get all
+// their neighbours.
+template <typename TriangleMesh, typename IndexOf>
+Vertex_adjacency make_vertex_adjacency(const TriangleMesh& tm, std::size_t n, const IndexOf& index_of)
+{
+  Vertex_adjacency adjacency;
+  adjacency.begin.assign(n + 1, 0);
+  for(auto e : edges(tm))
+  {
+    ++adjacency.begin[index_of(source(e, tm)) + 1];
+    ++adjacency.begin[index_of(target(e, tm)) + 1];
+  }
+  for(std::size_t i = 0; i < n; ++i)
+    adjacency.begin[i + 1] += adjacency.begin[i];
+  adjacency.neighbours.resize(adjacency.begin[n]);
+  std::vector<std::size_t> fill(adjacency.begin.begin(), adjacency.begin.end() - 1);
+  for(auto e : edges(tm))
+  {
+    const std::size_t a = index_of(source(e, tm)), b = index_of(target(e, tm));
+    adjacency.neighbours[fill[a]++] = b;
+    adjacency.neighbours[fill[b]++] = a;
+  }
+  return adjacency;
+}
+
+inline Vertex_adjacency make_vertex_adjacency(const Indexed_mesh& mesh)
+{
+  return Vertex_adjacency{mesh.fan_begin, mesh.fan};
+}
+
+inline double checked_feature_threshold(double c, const char* function)
+{
+  if(!(c >= 0. && c <= 1.))
+  {
+    std::ostringstream os;
+    os << function << ": feature_threshold must be in [0, 1], not " << c;
+    throw_invalid_input(os.str());
+  }
+  return c;
+}
+
+inline void check_field_is_finite(const Eigen::VectorXd& field, const char* function)
+{
+  for(Eigen::Index i = 0; i < field.size(); ++i)
+    if(!std::isfinite(field[i]))
+    {
+      std::ostringstream os;
+      os << function << ": the field value at vertex " << i << " is " << field[i] << ", not a finite number";
+      throw_invalid_input(os.str());
+    }
+}
+
+// The criterion of the paper (section 7), with NOTES 12 for the concave mirror:
+// i is convex if F(i) > F(j) for every j != i of its 2-ring and F(i) > c max F,
+// concave if F(i) < F(j) for every such j and F(i) < c min F. The 2-ring is visited
+// as the one-ring and the one-rings of its vertices; i itself, met there again, is
+// skipped (some vertices are visited twice, which changes no strict comparison).
+// Indices come out in increasing order.
+inline void detect_features(const Vertex_adjacency& adjacency, const Eigen::VectorXd& field, double c,
+                            std::vector<std::size_t>& convex, std::vector<std::size_t>& concave)
+{
+  const std::size_t n = std::size_t(field.size());
+  if(n == 0)
+    return;
+  const double convex_threshold = c * field.maxCoeff();
+  const double concave_threshold = c * field.minCoeff();
+  for(std::size_t i = 0; i < n; ++i)
+  {
+    const double value = field[Eigen::Index(i)];
+    bool is_maximum = value > convex_threshold;
+    bool is_minimum = value < concave_threshold;
+    auto compare = [&](std::size_t u) {
+      const double other = field[Eigen::Index(u)];
+      is_maximum = is_maximum && value > other;
+      is_minimum = is_minimum && value < other;
+    };
+    for(std::size_t a = adjacency.begin[i]; a < adjacency.begin[i + 1] && (is_maximum || is_minimum); ++a)
+    {
+      const std::size_t j = adjacency.neighbours[a];
+      compare(j);
+      for(std::size_t b = adjacency.begin[j]; b < adjacency.begin[j + 1]; ++b)
+        if(adjacency.neighbours[b] != i)
+          compare(adjacency.neighbours[b]);
+    }
+    if(is_maximum)
+      convex.push_back(i);
+    if(is_minimum)
+      concave.push_back(i);
+  }
+}
+
+} // namespace internal
+/// \endcond
+
+/// \ingroup PkgHeatDiffusionApplications
+/// Detects the convex and concave features of the scalar field `field` of `tm` at the
+/// scales k of `steps` (paper, section 7), reusing the operator \f$ A_t \f$ of
+/// `diffusion`: the fields \f$ F^k = A_t^k F^0 \f$ are computed in one pass.
+///
+/// Vertex \f$ v_i \f$ is a <em>convex feature</em> at scale k if \f$ F^k(i) > F^k(j) \f$ for
+/// every other vertex \f$ v_j \f$ of its 2-ring and \f$ F^k(i) > c \max F^k \f$; it is a
+/// <em>concave feature</em> if \f$ F^k(i) < F^k(j) \f$ for every such \f$ v_j \f$ and
+/// \f$ F^k(i) < c \min F^k \f$. The comparisons are strict: on a plateau there is no
+/// feature. With the Normal Signature as field, convex features lie on convex parts of
+/// the shape (positive NS) and concave ones on concave parts.
+///
+/// @tparam TriangleMesh, GeomTraits the template parameters of `diffusion`
+/// @tparam VertexFieldMap a model of `ReadablePropertyMap` with the `vertex_descriptor`
+///   of `TriangleMesh` as key and a floating-point type as value type
+///
+/// @param diffusion the diffusion operator, built on the mesh of `field`
+/// @param field the field \f$ F^0 \f$
+/// @param steps the scales k, in any order, repetitions allowed
+/// @param np an optional sequence of named parameters among the ones listed below
+///
+/// \cgalNamedParamsBegin
+///   \cgalParamNBegin{feature_threshold}
+///     \cgalParamDescription{the threshold c of the criterion: only the extrema beyond
+///       c times the field's extreme value are features; 0 keeps every strict 2-ring
+///       extremum of the right sign}
+///     \cgalParamType{`double` in [0, 1]}
+///     \cgalParamDefault{`0.8` (the paper's value)}
+///   \cgalParamNEnd
+/// \cgalNamedParamsEnd
+///
+/// \returns one `Features_at_scale` per entry of `steps`, in the same order.
+///
+/// \throws std::invalid_argument if a value of `field` is not finite or if c is not in [0, 1].
+///
+/// Complexity: \f$ O(k_{\max}\, \mathrm{nnz}(A_t)) \f$ for the diffusion (see
+/// `Anisotropic_heat_diffusion::diffuse()`) plus, per scale, one visit of every 2-ring:
+/// \f$ O(\sum_i d_i^2) \f$ for vertex degrees \f$ d_i \f$, linear in the mesh size.
+template <typename TriangleMesh, typename GeomTraits, typename VertexFieldMap,
+          typename NamedParameters = parameters::Default_named_parameters>
+std::vector<Features_at_scale<typename boost::graph_traits<TriangleMesh>::vertex_descriptor> >
+detect_multiscale_features(const Anisotropic_heat_diffusion<TriangleMesh, GeomTraits>& diffusion,
+                           const VertexFieldMap& field, const std::vector<std::size_t>& steps,
+                           const NamedParameters& np = parameters::default_values())
+{
+  typedef typename boost::graph_traits<TriangleMesh>::vertex_descriptor vertex_descriptor;
+  const char* const function = "detect_multiscale_features";
+  const double c = internal::checked_feature_threshold(
+      parameters::choose_parameter(parameters::get_parameter(np, internal_np::feature_threshold), 0.8), function);
+
+  const auto& kernel = diffusion.heat_kernel();
+  const TriangleMesh& tm = kernel.normal_controlled_coordinates().mesh();
+  const std::size_t n = kernel.number_of_vertices();
+  std::vector<vertex_descriptor> vertex_of_index(n);
+  Eigen::VectorXd f0(static_cast<Eigen::Index>(n));
+  for(vertex_descriptor v : vertices(tm))
+  {
+    const std::size_t i = kernel.vertex_index(v);
+    vertex_of_index[i] = v;
+    f0[Eigen::Index(i)] = CGAL::to_double(get(field, v));
+  }
+  internal::check_field_is_finite(f0, function);
+
+  const internal::Vertex_adjacency adjacency =
+      internal::make_vertex_adjacency(kernel.normal_controlled_coordinates().indexed_mesh());
+  const std::vector<Eigen::VectorXd> fields = diffusion.diffuse(f0, steps);
+  std::vector<Features_at_scale<vertex_descriptor> > result(steps.size());
+  std::vector<std::size_t> convex, concave;
+  for(std::size_t s = 0; s < steps.size(); ++s)
+  {
+    convex.clear();
+    concave.clear();
+    internal::detect_features(adjacency, fields[s], c, convex, concave);
+    result[s].number_of_steps = steps[s];
+    for(std::size_t i : convex)
+      result[s].convex.push_back(vertex_of_index[i]);
+    for(std::size_t i : concave)
+      result[s].concave.push_back(vertex_of_index[i]);
+  }
+  return result;
+}
+
+/// \ingroup PkgHeatDiffusionApplications
+/// Detects the convex and concave features of the scalar field `field` of `tm` at one
+/// scale k, the named parameter `number_of_steps` (paper, section 7). The criterion is
+/// that of the overload above: strict extrema over the 2-ring of \f$ F^k = A_t^k F^0 \f$,
+/// beyond c times the extreme value of \f$ F^k \f$.
+///
+/// For k > 0 the heat kernel and \f$ A_t \f$ are built from `np`; to detect features at
+/// several scales, or of several fields, build an `Anisotropic_heat_diffusion` once and
+/// use the overload above. For k = 0 (the default) the field is taken as it is and no
+/// kernel is computed: this is how the maxima of the heat kernel signature (the
+/// baseline of the paper's Fig. 7) are found, with a property map filled from
+/// `Edge_weighted_heat_kernel::heat_kernel_signature()`. The signature being positive,
+/// its concave output stays empty: the HKS cannot tell convex from concave.
+///
+/// @tparam TriangleMesh a model of `FaceListGraph` and `HalfedgeListGraph`
+/// @tparam VertexFieldMap a model of `ReadablePropertyMap` with `vertex_descriptor` as
+///   key and a floating-point type as value type
+/// @tparam ConvexOutputIterator, ConcaveOutputIterator models of `OutputIterator`
+///   accepting `vertex_descriptor`
+///
+/// @param tm the triangle mesh
+/// @param field the field \f$ F^0 \f$
+/// @param convex_out receives the convex features, in increasing vertex index order
+/// @param concave_out receives the concave features, in increasing vertex index order
+/// @param np an optional sequence of named parameters among the ones listed below
+///
+/// \cgalNamedParamsBegin
+///   \cgalParamNBegin{number_of_steps}
+///     \cgalParamDescription{the scale k: the number of diffusion steps applied to `field`}
+///     \cgalParamType{`std::size_t`}
+///     \cgalParamDefault{`0`}
+///   \cgalParamNEnd
+///   \cgalParamNBegin{feature_threshold}
+///     \cgalParamDescription{the threshold c of the criterion}
+///     \cgalParamType{`double` in [0, 1]}
+///     \cgalParamDefault{`0.8`}
+///   \cgalParamNEnd
+///   \cgalParamNBegin{time, sigma, number_of_eigenpairs, scale_invariant_kernel, progress_callback, vertex_point_map, vertex_normal_rule, geom_traits, ...}
+///     \cgalParamDescription{the diffusion, as for `Anisotropic_heat_diffusion` (used for k > 0 only)}
+///   \cgalParamNEnd
+///   \cgalParamNBegin{vertex_index_map}
+///     \cgalParamDescription{a property map associating to each vertex of `tm` a unique
+///       index in `[0, num_vertices(tm))`; it sets the order of the outputs}
+///     \cgalParamType{a model of `ReadablePropertyMap` with `vertex_descriptor` as key and `std::size_t` as value type}
+///     \cgalParamDefault{an automatically indexed internal map}
+///   \cgalParamNEnd
+/// \cgalNamedParamsEnd
+///
+/// \returns the two output iterators past the last features written.
+///
+/// \throws std::invalid_argument if a value of `field` is not finite, if c is not in
+///   [0, 1], or (k > 0) on a mesh or parameter the diffusion rejects.
+/// \throws std::runtime_error (k > 0) if the eigen solve fails or is cancelled.
+///
+/// Complexity: linear in the size of `tm` for k = 0; for k > 0 that of building an
+/// `Anisotropic_heat_diffusion`, plus k sparse products.
+template <typename TriangleMesh, typename VertexFieldMap, typename ConvexOutputIterator,
+          typename ConcaveOutputIterator, typename NamedParameters = parameters::Default_named_parameters>
+std::pair<ConvexOutputIterator, ConcaveOutputIterator>
+detect_multiscale_features(const TriangleMesh& tm, const VertexFieldMap& field, ConvexOutputIterator convex_out,
+                           ConcaveOutputIterator concave_out,
+                           const NamedParameters& np = parameters::default_values())
+{
+  typedef typename boost::graph_traits<TriangleMesh>::vertex_descriptor vertex_descriptor;
+  typedef typename CGAL::GetGeomTraits<TriangleMesh, NamedParameters>::type GeomTraits;
+  const char* const function = "detect_multiscale_features";
+  const auto steps = parameters::choose_parameter(parameters::get_parameter(np, internal_np::number_of_steps), 0);
+  if(!(double(steps) >= 0))
+    internal::throw_invalid_input("detect_multiscale_features: number_of_steps must not be negative");
+
+  if(steps != 0)
+  {
+    const Anisotropic_heat_diffusion<TriangleMesh, GeomTraits> diffusion(tm, np);
+    const auto features = detect_multiscale_features(diffusion, field, {std::size_t(steps)}, np);
+    convex_out = std::copy(features.front().convex.begin(), features.front().convex.end(), convex_out);
+    concave_out = std::copy(features.front().concave.begin(), features.front().concave.end(), concave_out);
+    return {convex_out, concave_out};
+  }
+
+  const double c = internal::checked_feature_threshold(
+      parameters::choose_parameter(parameters::get_parameter(np, internal_np::feature_threshold), 0.8), function);
+  const auto vim = CGAL::get_initialized_vertex_index_map(tm, np);
+  const std::size_t n = std::size_t(num_vertices(tm));
+  std::vector<vertex_descriptor> vertex_of_index(n);
+  Eigen::VectorXd f0(static_cast<Eigen::Index>(n));
+  for(vertex_descriptor v : vertices(tm))
+  {
+    const std::size_t i = std::size_t(get(vim, v));
+    vertex_of_index[i] = v;
+    f0[Eigen::Index(i)] = CGAL::to_double(get(field, v));
+  }
+  internal::check_field_is_finite(f0, function);
+  const internal::Vertex_adjacency adjacency = internal::make_vertex_adjacency(
+      tm, n, [&vim](vertex_descriptor v) { return std::size_t(get(vim, v)); });
+  std::vector<std::size_t> convex, concave;
+  internal::detect_features(adjacency, f0, c, convex, concave);
+  for(std::size_t i : convex)
+    *convex_out++ = vertex_of_index[i];
+  for(std::size_t i : concave)
+    *concave_out++ = vertex_of_index[i];
+  return {convex_out, concave_out};
+}
+
+} // namespace Heat_diffusion
+} // namespace CGAL
+
+#endif // CGAL_HEAT_DIFFUSION_MULTISCALE_FEATURES_H

@@ -1,0 +1,236 @@
+// Copyright (c) 2026 The CGAL Heat_diffusion developers.
+// SPDX-License-Identifier: LGPL-3.0-or-later
+//
+// libFuzzer target: arbitrary bytes as an OFF file, through the tool's reading path
+// (check_off_stream, CGAL's polygon soup reader, repair, orientation, triangulation)
+// and the API user's (CGAL::IO::read_OFF into a Surface_mesh), then NCC, the
+// reconstruction, a small heat kernel (m <= 10), diffusion and feature detection,
+// with parameters drawn from the input.
+//
+// Fine: std::invalid_argument and std::runtime_error from the package (and any
+// std::exception from CGAL's reading and repair, which the tool reports as bad input).
+// A bug: any other exception from the package, a crash, a sanitizer report, a NaN
+// or infinity in an output when nothing was thrown, heat that is not conserved.
+//
+// Run by scripts/sanitize_and_fuzz.sh; test/Heat_diffusion/fuzz/regressions/ holds
+// the inputs that once failed.
+
+#include "cli_support.h"
+
+#include <CGAL/Heat_diffusion/Anisotropic_heat_diffusion.h>
+#include <CGAL/Heat_diffusion/Edge_weighted_heat_kernel.h>
+#include <CGAL/Heat_diffusion/multiscale_features.h>
+#include <CGAL/Heat_diffusion/normal_controlled_coordinates.h>
+#include <CGAL/Heat_diffusion/reconstruction.h>
+
+#include <CGAL/IO/OFF.h>
+#include <CGAL/Polygon_mesh_processing/orient_polygon_soup.h>
+#include <CGAL/Polygon_mesh_processing/polygon_soup_to_polygon_mesh.h>
+#include <CGAL/Polygon_mesh_processing/repair_polygon_soup.h>
+
+#include <boost/property_map/property_map.hpp>
+
+#include <cmath>
+#include <cstdint>
+#include <cstdio>
+#include <cstdlib>
+#include <limits>
+#include <map>
+#include <sstream>
+#include <string>
+#include <vector>
+
+namespace {
+
+namespace HD = CGAL::Heat_diffusion;
+namespace PMP = CGAL::Polygon_mesh_processing;
+typedef heat_diffusion_cli::Mesh Mesh;
+typedef Mesh::Vertex_index Vertex;
+
+// Bounds that keep one execution well below a second under the sanitizers.
+const std::size_t maximum_input_bytes = 4096;
+const std::size_t maximum_vertices = 64;
+const std::size_t maximum_faces = 160;
+
+[[noreturn]] void bug(const std::string& what)
+{
+  std::fprintf(stderr, "fuzz_off_pipeline: BUG: %s\n", what.c_str());
+  std::abort();
+}
+
+void require(bool condition, const std::string& what)
+{
+  if(!condition)
+    bug(what);
+}
+
+// Parameters drawn from the input bytes (a hash), so that the fuzzer explores them too.
+struct Parameters
+{
+  std::size_t m = 10;
+  double sigma = 0.1, time = 1.;
+  bool scale_invariant = false;
+};
+
+Parameters parameters_of(const std::uint8_t* data, std::size_t size)
+{
+  std::uint64_t h = 1469598103934665603ull;
+  for(std::size_t i = 0; i < size; ++i)
+    h = (h ^ data[i]) * 1099511628211ull;
+  Parameters p;
+  p.m = 1 + std::size_t(h % 10);
+  const double sigmas[] = {1e-3, 0.1, 1., std::numeric_limits<double>::infinity()};
+  const double times[] = {1e-2, 1., 50.};
+  p.sigma = sigmas[(h >> 8) % 4];
+  p.time = times[(h >> 16) % 3];
+  p.scale_invariant = ((h >> 24) & 1) != 0;
+  return p;
+}
+
+// The package on one mesh. Returns normally when it computed finite results or
+// threw std::invalid_argument / std::runtime_error; calls bug() otherwise.
+void run_package(const Mesh& mesh, const Parameters& p)
+{
+  const std::size_t n = mesh.number_of_vertices();
+  if(n > maximum_vertices || mesh.number_of_faces() > maximum_faces)
+    return;
+  try
+  {
+    const HD::Normal_controlled_coordinates<Mesh> ncc(mesh);
+    std::map<Vertex, double> ns;
+    for(Vertex v : mesh.vertices())
+    {
+      const auto d = ncc.ncc(v);
+      ns[v] = ncc.normal_signature(v);
+      require(std::isfinite(ns[v]) && std::isfinite(d.x()) && std::isfinite(d.y()) && std::isfinite(d.z()),
+              "NCC not finite");
+    }
+
+    {
+      Mesh copy = mesh;
+      try
+      {
+        HD::reconstruct_from_normal_signature(copy, boost::make_assoc_property_map(ns));
+        for(Vertex v : copy.vertices())
+        {
+          const auto& q = copy.point(v);
+          require(std::isfinite(q.x()) && std::isfinite(q.y()) && std::isfinite(q.z()),
+                  "reconstructed position not finite");
+        }
+      }
+      catch(const std::runtime_error&)  // a singular system is reported, not an error here
+      {
+      }
+    }
+
+    const HD::Edge_weighted_heat_kernel<Mesh> kernel(
+        mesh, HD::parameters::combine(HD::parameters::number_of_eigenpairs(p.m), HD::parameters::sigma(p.sigma),
+                                      HD::parameters::scale_invariant_kernel(p.scale_invariant)));
+    require(kernel.number_of_eigenpairs() == (std::min)(p.m, n), "m not clamped");
+    require(kernel.eigenvalues().allFinite() && kernel.eigenvectors().allFinite(), "eigenpairs not finite");
+    for(Vertex v : mesh.vertices())
+      require(std::isfinite(kernel.heat_kernel_signature(v, p.time)), "HKS not finite");
+
+    const HD::Anisotropic_heat_diffusion<Mesh> diffusion(kernel, p.time);
+    Eigen::VectorXd f0(static_cast<Eigen::Index>(n));
+    for(Vertex v : mesh.vertices())
+      f0[Eigen::Index(kernel.vertex_index(v))] = ns[v] + 1.;
+    const std::vector<Eigen::VectorXd> fields = diffusion.diffuse(f0, std::vector<std::size_t>{0, 1, 6});
+    const double scale = f0.cwiseAbs().sum();
+    for(const Eigen::VectorXd& f : fields)
+    {
+      require(f.allFinite(), "diffused field not finite");
+      require(std::abs(f.sum() - f0.sum()) <= 1e-9 * scale, "heat not conserved");
+    }
+
+    std::map<Vertex, double> field;
+    for(Vertex v : mesh.vertices())
+      field[v] = f0[Eigen::Index(kernel.vertex_index(v))];
+    const auto features = HD::detect_multiscale_features(diffusion, boost::make_assoc_property_map(field), {0, 3});
+    for(const auto& scale_features : features)
+      for(const auto* list : {&scale_features.convex, &scale_features.concave})
+        for(Vertex v : *list)
+          require(std::size_t(v) < n, "feature vertex out of range");
+  }
+  catch(const std::invalid_argument&)
+  {
+  }
+  catch(const std::runtime_error&)
+  {
+  }
+  catch(const std::exception& e)
+  {
+    bug(std::string("unexpected exception from the package: ") + e.what());
+  }
+}
+
+} // namespace
+
+extern "C" int LLVMFuzzerTestOneInput(const std::uint8_t* data, std::size_t size)
+{
+  if(size > maximum_input_bytes)
+    return 0;
+  const std::string text(reinterpret_cast<const char*>(data), size);
+  const Parameters p = parameters_of(data, size);
+
+  // CGAL's OFF reader is unsafe on hostile files (huge allocations, unchecked
+  // conversions); the tool checks the file first, and so does this target.
+  {
+    std::istringstream is(text);
+    try
+    {
+      heat_diffusion_cli::check_off_stream(is, size);
+    }
+    catch(const heat_diffusion_cli::Input_error&)
+    {
+      return 0;
+    }
+  }
+
+  // The API user's path: a Surface_mesh read as it is.
+  {
+    std::istringstream is(text);
+    Mesh mesh;
+    bool read = false;
+    try
+    {
+      read = CGAL::IO::read_OFF(is, mesh) && mesh.number_of_vertices() <= maximum_vertices;
+    }
+    catch(const std::exception&)
+    {
+    }
+    if(read)
+      run_package(mesh, p);
+  }
+
+  // The tool's path (CGAL::IO::read_polygon_mesh and triangulate_faces, on a stream).
+  {
+    std::istringstream is(text);
+    std::vector<Mesh::Point> points;
+    std::vector<std::vector<std::size_t> > polygons;
+    Mesh mesh;
+    try
+    {
+      if(!CGAL::IO::read_OFF(is, points, polygons) || points.size() > maximum_vertices ||
+         polygons.size() > maximum_faces)
+        return 0;
+      PMP::repair_polygon_soup(points, polygons);
+      if(!PMP::orient_polygon_soup(points, polygons))
+        return 0;
+      PMP::polygon_soup_to_polygon_mesh(points, polygons, mesh);
+      if(is_empty(mesh) || faces(mesh).size() == 0)
+        return 0;
+      std::size_t polygon_faces = 0;
+      for(auto f : faces(mesh))
+        polygon_faces += CGAL::is_triangle(halfedge(f, mesh), mesh) ? 0 : 1;
+      if(polygon_faces > 0 && !PMP::triangulate_faces(mesh))
+        return 0;
+    }
+    catch(const std::exception&)
+    {
+      return 0;
+    }
+    run_package(mesh, p);
+  }
+  return 0;
+}

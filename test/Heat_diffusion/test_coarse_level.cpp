@@ -1,0 +1,89 @@
+// Copyright (c) 2026 The CGAL Heat_diffusion developers.
+// SPDX-License-Identifier: LGPL-3.0-or-later
+//
+// The coarse-level kernel (paper, eq. 21): its error against the full computation is
+// measured on CGAL's fandisk and armadillo, and heat is conserved exactly on the fine
+// mesh.
+
+#include <CGAL/Heat_diffusion/Anisotropic_heat_diffusion.h>
+#include <CGAL/Heat_diffusion/Edge_weighted_heat_kernel.h>
+
+#include <CGAL/Exact_predicates_inexact_constructions_kernel.h>
+#include <CGAL/Surface_mesh.h>
+
+#include "test_support.h"
+
+#include <map>
+
+namespace HD = CGAL::Heat_diffusion;
+typedef CGAL::Exact_predicates_inexact_constructions_kernel K;
+typedef CGAL::Surface_mesh<K::Point_3> Mesh;
+typedef Mesh::Vertex_index Vertex;
+typedef HD::Edge_weighted_heat_kernel<Mesh> Kernel;
+typedef HD::Anisotropic_heat_diffusion<Mesh> Diffusion;
+
+int main()
+{
+  try
+  {
+    const std::vector<std::size_t> steps = {1, 10, 40};
+    // The bound on the relative L2 error of the diffused NS for a 5000-vertex coarse
+    // level at t = 4 ln 10 / lambda_m, where the truncated kernel is valid: about twice
+    // the worst value this test measured (0.097 on fandisk at k = 1, 0.054 on
+    // armadillo), so that a regression of the coarse path is caught. At t = 1 the
+    // truncated kernels themselves are far from the heat kernel and the coarse one
+    // differs from the full one by 27 to 97 % (printed, not asserted; see the manual).
+    const std::map<std::string, double> bound_5000 = {{"fandisk.off", 0.2}, {"armadillo.off", 0.2}};
+    for(const char* name : {"fandisk.off", "armadillo.off"})
+    {
+      const Mesh mesh = test_support::load<Mesh>(name);
+      const auto base = HD::parameters::combine(HD::parameters::sigma(1.), HD::parameters::number_of_eigenpairs(150));
+      const Kernel full(mesh, HD::parameters::combine(base, HD::parameters::coarse_vertex_count(0)));
+      CHECK(full.coarse_vertex_count() == 0);
+      // t = 1 (the paper's default) and t = 4 ln 10 / lambda_m, from where on the
+      // truncated kernel is accurate (see the user manual, "Truncation").
+      const double t_valid = 4. * std::log(10.) / full.eigenvalues()[full.eigenvalues().size() - 1];
+      for(double t : {1., t_valid})
+      {
+      const Diffusion full_diffusion(full, t);
+      Eigen::VectorXd f0(Eigen::Index(mesh.number_of_vertices()));
+      for(Vertex v : mesh.vertices())
+        f0[Eigen::Index(full.vertex_index(v))] = full.normal_controlled_coordinates().normal_signature(v);
+      const std::vector<Eigen::VectorXd> reference = full_diffusion.diffuse(f0, steps);
+
+      for(std::size_t coarse : {1000, 2000, 5000})
+      {
+        const Kernel kernel(mesh, HD::parameters::combine(base, HD::parameters::coarse_vertex_count(coarse)));
+        const Diffusion diffusion(kernel, t);
+        const std::vector<Eigen::VectorXd> fields = diffusion.diffuse(f0, steps);
+        std::cout << name << ", t = " << t << ": coarse level of " << kernel.coarse_vertex_count() << " vertices, regions mean "
+                  << diffusion.region_statistics().mean_size << " (full " << full_diffusion.region_statistics().mean_size
+                  << "), collapsed " << diffusion.region_statistics().collapsed_regions << " (full "
+                  << full_diffusion.region_statistics().collapsed_regions << "); relative L2 error of F^k:";
+        double worst = 0;
+        for(std::size_t s = 0; s < steps.size(); ++s)
+        {
+          const double error = (fields[s] - reference[s]).norm() / reference[s].norm();
+          worst = (std::max)(worst, error);
+          std::cout << " k=" << steps[s] << ": " << error;
+        }
+        std::cout << std::endl;
+        CHECK(kernel.coarse_vertex_count() > 0 && kernel.coarse_vertex_count() <= coarse + coarse / 10);
+        // heat is conserved exactly on the fine mesh in coarse mode too (1000 steps
+        // where the regions are small; 100 where they have thousands of vertices)
+        const Eigen::VectorXd last = diffusion.diffuse(f0, t > 1. ? 100 : 1000);
+        const double drift = std::abs(last.sum() - f0.sum()) / f0.cwiseAbs().sum();
+        CHECK_MESSAGE(drift <= 1e-12, name << ", coarse " << coarse << ": heat drift " << drift);
+        if(coarse == 5000 && t > 1.)
+          CHECK_MESSAGE(worst <= bound_5000.at(name), name << ": coarse 5000 error " << worst);
+      }
+      }
+    }
+  }
+  catch(const std::exception& e)
+  {
+    std::cerr << "unexpected exception: " << e.what() << std::endl;
+    test_support::check(false, "no unexpected exception", __FILE__, __LINE__);
+  }
+  return test_support::report("test_coarse_level");
+}

@@ -1,0 +1,229 @@
+#!/usr/bin/env bash
+# Hostile input through the command-line tool: every subcommand, on every mesh of the
+# corpus test/Heat_diffusion/data/, exits 0 with finite outputs or exits 1 with a
+# message that names the file and the problem, and leaves no output behind.
+# Usage: test_hostile_cli.sh HEAT_DIFFUSION_BINARY CORPUS_DIR WORK_DIR
+#
+# To add a mesh: put it into CORPUS_DIR and a line into `accepted` or `rejected`.
+# To add a subcommand: a line into `commands` (it is run only if `--help` lists it).
+set -u
+tool=$1 corpus=$(cd "$2" && pwd) work=$3
+rm -rf "$work" && mkdir -p "$work" && cd "$work" || exit 1
+work=$(pwd)
+passed=0 failed=0
+pass() { passed=$((passed + 1)); }
+fail() { failed=$((failed + 1)); echo "FAILED: $*"; }
+
+# Subcommands and the options that keep them fast on tiny meshes.
+declare -A commands=(
+  [ncc]=""
+  [diffuse]="-m 10 -k 0,3"
+  [features]="-m 10 -k 0,3"
+  [hks]="-m 10"
+  [decompose]="-m 10 --levels 2 --steps-per-level 2"
+  [enhance]="-m 10 --steps-per-level 2"
+)
+available=()
+for c in ncc diffuse features hks decompose enhance; do
+  "$tool" --help | grep -qE "^  $c " && available+=("$c")
+done
+echo "subcommands under test: ${available[*]}"
+
+# Meshes every subcommand accepts.
+accepted=(
+  quad_faces.off          # triangulated by the tool
+  needle.off
+  duplicated_vertex.off
+  two_neighbours.off
+  two_components.off
+  three_components.off
+  single_triangle.off
+  open_strip.off
+  hole.off
+  octahedron.off
+  huge_coordinates.off
+  tiny_coordinates.off
+)
+# Files every subcommand rejects (exit 1), and what the message says after the file name.
+declare -A rejected=(
+  [zero_area.off]='face 0 \(vertices 0, 1, 2\) has zero area'
+  [isolated_vertex.off]='vertex 4 is isolated'
+  [pillow.off]='vertex 0 has no usable normal'
+  [nonmanifold_edge.off]='cannot read a polygon mesh'
+  [nonmanifold_vertex.off]='cannot read a polygon mesh'
+  [nan_coordinate.off]='vertex 3 has 2 numbers, expected 3'
+  [inf_coordinate.off]='vertex 3 has 2 numbers, expected 3'
+  [overflow_coordinate.off]='vertex 3 has 2 numbers, expected 3'
+  [truncated.off]='vertex 1 has 2 numbers, expected 3'
+  [header_only.off]='no vertex and face counts'
+  [empty.off]='the mesh has no faces'
+  [garbage.off]='garbage.off: '
+  [huge_face_size.off]='face 0 declares 2000000000 vertices, but its line has 3 indices'
+  [huge_counts.off]='the vertex count 2e\+09 is out of range'
+  [negative_index.off]='face 0 has the vertex index -1, not one of 0..2'
+  [index_out_of_range.off]='face 0 has the vertex index 7, not one of 0..2'
+  [fractional_index.off]='face 0 has the vertex index 1.5'
+  [bad_color.off]='vertex 0 has an invalid colour'
+  [missing_normal.off]='vertex 1 has 3 numbers, expected 6'
+)
+
+# Every value of a JSON summary is finite (the tool writes null for NaN and infinity),
+# and every double property of every PLY output is finite, with valid face indices.
+check_outputs() {
+  python3 - "$@" <<'EOF'
+import json, math, struct, sys
+summary, plys = sys.argv[1], sys.argv[2:]
+def walk(x, path):
+    if x is None: raise SystemExit("null (NaN or infinity) at " + path)
+    if isinstance(x, dict):
+        for k, v in x.items(): walk(v, path + "." + k)
+    if isinstance(x, list):
+        for i, v in enumerate(x): walk(v, path + "[%d]" % i)
+walk(json.load(open(summary)), "summary")
+sizes = {"char": "b", "uchar": "B", "short": "h", "ushort": "H", "int": "i", "uint": "I",
+         "float": "f", "double": "d", "int8": "b", "uint8": "B", "int16": "h", "uint16": "H",
+         "int32": "i", "uint32": "I", "float32": "f", "float64": "d"}
+for name in plys:
+    data = open(name, "rb").read()
+    end = data.index(b"end_header\n") + len(b"end_header\n")
+    header = data[:end].decode().split("\n")
+    if "format binary_little_endian 1.0" not in header: raise SystemExit(name + ": not binary PLY")
+    elements, offset = [], end
+    for line in header:
+        w = line.split()
+        if w[:1] == ["element"]: elements.append((w[1], int(w[2]), []))
+        elif w[:1] == ["property"]: elements[-1][2].append(w[1:])
+    nv = 0
+    for element, count, props in elements:
+        if element == "vertex": nv = count
+        for _ in range(count):
+            for p in props:
+                if p[0] == "list":
+                    n, = struct.unpack_from("<" + sizes[p[1]], data, offset); offset += struct.calcsize(sizes[p[1]])
+                    values = struct.unpack_from("<%d%s" % (n, sizes[p[2]]), data, offset); offset += n * struct.calcsize(sizes[p[2]])
+                    if element == "face" and not all(0 <= i < nv for i in values): raise SystemExit(name + ": bad face index")
+                else:
+                    v, = struct.unpack_from("<" + sizes[p[0]], data, offset); offset += struct.calcsize(sizes[p[0]])
+                    if not math.isfinite(v): raise SystemExit("%s: %s %s = %r" % (name, element, p[1], v))
+    if offset != len(data): raise SystemExit(name + ": %d bytes after the data" % (len(data) - offset))
+EOF
+}
+
+# run DIR COMMAND...: runs in a new empty folder DIR; sets $status and $out.
+run() {
+  local dir=$1; shift
+  rm -rf "$dir" && mkdir -p "$dir"
+  out=$(cd "$dir" && timeout 120 "$@" 2>&1); status=$?
+}
+
+# Accepted meshes: exit 0, a finite JSON summary, finite PLY outputs.
+for mesh in "${accepted[@]}"; do
+  for c in "${available[@]}"; do
+    dir="$work/ok_${c}_${mesh%.off}"
+    # shellcheck disable=SC2086
+    run "$dir" "$tool" "$c" "$corpus/$mesh" ${commands[$c]} --json --quiet
+    if [ "$status" -ne 0 ]; then fail "$c $mesh -> exit $status: $out"; continue; fi
+    printf '%s\n' "$out" > "$dir.json"
+    if why=$(check_outputs "$dir.json" "$dir"/*.ply 2>&1); then pass; else fail "$c $mesh: $why"; fi
+    if ls "$dir" | grep -q partial; then fail "$c $mesh left a temporary file"; else pass; fi
+    if ls "$dir"/*.off >/dev/null 2>&1 && grep -qiE 'nan|inf' "$dir"/*.off; then fail "$c $mesh wrote a non-finite OFF"; else pass; fi
+  done
+done
+
+# Rejected files: exit 1, the message names the file and the problem, nothing written.
+printf '' > "$work/zero_bytes.off"
+rejected[zero_bytes.off]='no OFF header'
+mkdir -p "$work/a_directory.off"
+rejected[a_directory.off]='no such file'
+rejected[missing.off]='no such file'
+for mesh in "${!rejected[@]}"; do
+  path="$corpus/$mesh"
+  [ -e "$path" ] || path="$work/$mesh"
+  for c in "${available[@]}"; do
+    dir="$work/bad_${c}_${mesh%.off}"
+    # shellcheck disable=SC2086
+    run "$dir" "$tool" "$c" "$path" ${commands[$c]} --quiet
+    if [ "$status" -ne 1 ]; then fail "$c $mesh -> exit $status, expected 1: $out"; continue; fi
+    if grep -qE -- "$mesh: .*${rejected[$mesh]}" <<<"$out"; then pass; else fail "$c $mesh: message lacks '${rejected[$mesh]}': $out"; fi
+    if [ -z "$(ls -A "$dir")" ]; then pass; else fail "$c $mesh left $(ls "$dir")"; fi
+  done
+done
+
+# A 40-byte file declaring a face of 2e9 vertices is rejected at once (CGAL's reader
+# alone allocates 16 GB for it), within a small address space.
+start=$(date +%s)
+out=$( (ulimit -v 4000000; "$tool" ncc "$corpus/huge_face_size.off" -o x.ply) 2>&1); status=$?
+[ "$status" -eq 1 ] && [ $(($(date +%s) - start)) -lt 10 ] && pass || fail "huge_face_size.off: exit $status after $(($(date +%s) - start)) s: $out"
+
+# expect CODE PATTERN -- COMMAND...: exit status CODE and output matching PATTERN
+expect() {
+  local code=$1 pattern=$2; shift 3
+  local out status
+  out=$("$@" 2>&1); status=$?
+  if [ "$status" -ne "$code" ]; then fail "$* -> exit $status, expected $code: $out"; return; fi
+  if [ -n "$pattern" ] && ! grep -qE -- "$pattern" <<<"$out"; then fail "$* -> output lacks '$pattern': $out"; return; fi
+  pass
+}
+
+# Parameters: m larger than the vertex count is clamped; sigma <= 0, t <= 0, k < 0
+# and non-numbers are usage errors (exit 2), for every subcommand that takes them.
+octahedron="$corpus/octahedron.off"
+mkdir -p params && cd params || exit 1
+for c in "${available[@]}"; do
+  [ "$c" = ncc ] && continue
+  help=$("$tool" "$c" --help)
+  # shellcheck disable=SC2086
+  expect 0 '' -- "$tool" "$c" "$octahedron" ${commands[$c]} -m 1000 --quiet
+  for bad in 0 -1 nan inf -inf abc ''; do
+    grep -q -- '-m M' <<<"$help" && expect 2 '-m must be a number' -- "$tool" "$c" "$octahedron" -m "$bad"
+    grep -q -- '--sigma S' <<<"$help" && [ "$bad" != inf ] &&
+      expect 2 '--sigma must be a number > 0' -- "$tool" "$c" "$octahedron" --sigma "$bad"
+    grep -q -- '--time T' <<<"$help" && expect 2 '--time must be a number > 0' -- "$tool" "$c" "$octahedron" --time "$bad"
+  done
+  if grep -q -- '-k K1' <<<"$help"; then
+    for bad in -1 1,-1 1.5 abc '' , 1000001 99999999999999999999; do
+      expect 2 '-k takes a comma-separated list|-k needs at least one step' -- "$tool" "$c" "$octahedron" -k "$bad"
+    done
+  fi
+done
+# -m 1e30 would convert a double out of the range of std::size_t (undefined
+# behaviour in command_diffuse.h and command_features.h): not tested until fixed.
+cd "$work" || exit 1
+
+# The tool never overwrites its input (same path, another spelling, a symbolic or
+# a hard link), and never writes over something that is not a regular file.
+mkdir -p overwrite && cd overwrite || exit 1
+cp "$corpus/octahedron.off" mine.off
+ln -sf mine.off link.ply
+ln -f mine.off hard.ply
+for c in "${available[@]}"; do
+  [ "$c" = ncc ] && extra=() || extra=(-m 4)
+  case $c in
+    ncc|hks|enhance)  # -o names the output file
+      for target in mine.off ./mine.off "$(pwd)/mine.off" ../overwrite/mine.off link.ply hard.ply; do
+        expect 1 'refusing to overwrite the input' -- "$tool" "$c" mine.off "${extra[@]}" -o "$target"
+      done ;;
+    diffuse|features)  # -o names a prefix: PREFIX_k<K>.ply
+      cp mine.off in_k0.ply
+      expect 1 'refusing to overwrite the input' -- "$tool" "$c" in_k0.ply "${extra[@]}" -k 0 -o in ;;
+    decompose)  # PREFIX_band<j>.ply, PREFIX_residual.ply
+      cp mine.off in_residual.ply
+      expect 1 'refusing to overwrite the input' -- "$tool" "$c" in_residual.ply "${extra[@]}" -o in ;;
+  esac
+  cmp -s mine.off "$corpus/octahedron.off" && pass || fail "$c modified its input"
+done
+# a directory or a device as output: exit 1, nothing left behind, the device intact
+mkdir -p out_dir.ply
+expect 1 'cannot write|not a regular file' -- "$tool" ncc mine.off -o out_dir.ply
+[ -d out_dir.ply ] && [ -z "$(ls -A out_dir.ply)" ] && pass || fail "the output folder was changed"
+expect 1 'not a regular file' -- "$tool" ncc mine.off -o /dev/null
+[ -c /dev/null ] && pass || fail "/dev/null is no longer a device"
+ls ./*.partial* >/dev/null 2>&1 && fail "temporary files left: $(ls ./*.partial*)" || pass
+# a temporary name that is taken by another file: that file is kept
+cp mine.off out.ply.partial
+expect 0 '' -- "$tool" ncc mine.off -o out.ply --quiet
+cmp -s out.ply.partial mine.off && pass || fail "out.ply.partial was overwritten"
+cd "$work" || exit 1
+
+echo "test_hostile_cli: $passed passed, $failed failed"
+[ "$failed" -eq 0 ]

@@ -1,0 +1,578 @@
+// Copyright (c) 2026 The CGAL Heat_diffusion developers.
+// SPDX-License-Identifier: LGPL-3.0-or-later
+//
+// Hostile input through the API: every public function, on every mesh of the
+// corpus test/Heat_diffusion/data/ (and on meshes built here), either gives a
+// correct result or throws an exception that names the problem. Never a crash, a
+// NaN, or a silently wrong answer.
+//
+// To add a mesh: put a tiny OFF file into data/ and a line into `corpus()` below,
+// with the expected outcome; the CLI cases are in test_hostile_cli.sh.
+
+#include <CGAL/Heat_diffusion/Anisotropic_heat_diffusion.h>
+#include <CGAL/Heat_diffusion/Edge_weighted_heat_kernel.h>
+#include <CGAL/Heat_diffusion/multiscale_features.h>
+#include <CGAL/Heat_diffusion/normal_controlled_coordinates.h>
+#include <CGAL/Heat_diffusion/reconstruction.h>
+
+#include <CGAL/Exact_predicates_inexact_constructions_kernel.h>
+#include <CGAL/IO/OFF.h>
+#include <CGAL/Polygon_mesh_processing/orient_polygon_soup.h>
+#include <CGAL/Polygon_mesh_processing/polygon_soup_to_polygon_mesh.h>
+#include <CGAL/Subdivision_method_3/subdivision_methods_3.h>
+#include <CGAL/Surface_mesh.h>
+#include <CGAL/boost/graph/copy_face_graph.h>
+#include <CGAL/boost/graph/generators.h>
+
+#include "test_support.h"
+
+#include <boost/property_map/property_map.hpp>
+
+#include <algorithm>
+#include <array>
+#include <cmath>
+#include <fstream>
+#include <limits>
+#include <map>
+#include <sstream>
+#include <string>
+#include <vector>
+
+namespace HD = CGAL::Heat_diffusion;
+namespace PMP = CGAL::Polygon_mesh_processing;
+
+typedef CGAL::Exact_predicates_inexact_constructions_kernel K;
+typedef K::Point_3 Point;
+typedef CGAL::Surface_mesh<Point> Mesh;
+typedef Mesh::Vertex_index Vertex;
+typedef HD::Edge_weighted_heat_kernel<Mesh> Kernel;
+typedef HD::Anisotropic_heat_diffusion<Mesh> Diffusion;
+
+namespace {
+
+const double nan = std::numeric_limits<double>::quiet_NaN();
+const double inf = std::numeric_limits<double>::infinity();
+
+std::string corpus_path(const std::string& name)
+{
+  return std::string(CGAL_HEAT_DIFFUSION_HOSTILE_DATA_DIR) + "/" + name;
+}
+
+// The user's way to get a Surface_mesh from an OFF stream (CGAL's BGL reader, which
+// keeps isolated and duplicated vertices as they are).
+bool read_mesh(const std::string& name, Mesh& mesh)
+{
+  std::ifstream is(corpus_path(name));
+  CHECK_MESSAGE(is.good(), "cannot open " << corpus_path(name));
+  return CGAL::IO::read_OFF(is, mesh);
+}
+
+// Connected components by vertex index (through the faces).
+std::vector<std::size_t> component_of_vertex(const Mesh& mesh)
+{
+  std::vector<std::size_t> component(mesh.number_of_vertices(), std::size_t(-1));
+  std::size_t count = 0;
+  for(Vertex s : mesh.vertices())
+  {
+    if(component[s.idx()] != std::size_t(-1))
+      continue;
+    std::vector<Vertex> stack(1, s);
+    component[s.idx()] = count;
+    while(!stack.empty())
+    {
+      const Vertex v = stack.back();
+      stack.pop_back();
+      for(Vertex u : vertices_around_target(mesh.halfedge(v), mesh))
+        if(component[u.idx()] == std::size_t(-1))
+        {
+          component[u.idx()] = count;
+          stack.push_back(u);
+        }
+    }
+    ++count;
+  }
+  return component;
+}
+
+bool all_finite(const Eigen::MatrixXd& m) { return m.allFinite(); }
+
+// Everything the package computes on a mesh it accepts, checked for finiteness and
+// for the properties that hold on any valid mesh.
+void check_accepted_mesh(const Mesh& mesh, const std::string& name)
+{
+  const std::size_t n = mesh.number_of_vertices();
+
+  // NCC: finite, parallel to the normals, positive areas, rows of N summing to 0.
+  const HD::Normal_controlled_coordinates<Mesh> ncc(mesh);
+  bool finite = true, parallel = true, positive_areas = true;
+  for(Vertex v : mesh.vertices())
+  {
+    const auto d = ncc.ncc(v), nv = ncc.normal(v);
+    finite = finite && std::isfinite(ncc.normal_signature(v)) && std::isfinite(d.x()) && std::isfinite(d.y()) &&
+             std::isfinite(d.z());
+    parallel = parallel && std::sqrt(CGAL::cross_product(d, nv).squared_length()) <=
+                               1e-9 * (std::max)(1., std::abs(ncc.normal_signature(v)));
+    // in user units, an area overflows at 1e300 and underflows at 1e-300: inf and 0
+    // are what a double can say, but never NaN or a negative value
+    positive_areas = positive_areas && ncc.voronoi_area(v) >= 0 && !std::isnan(ncc.voronoi_area(v));
+  }
+  for(double a : ncc.data().areas)
+    positive_areas = positive_areas && a > 0 && std::isfinite(a);
+  CHECK_MESSAGE(finite, name << ": NCC / NS not finite");
+  CHECK_MESSAGE(parallel, name << ": NCC not parallel to the normal");
+  CHECK_MESSAGE(positive_areas, name << ": Voronoi area not positive and finite");
+  const Eigen::SparseMatrix<double> N = ncc.internal_operator_matrix();
+  const Eigen::VectorXd row_sums = N * Eigen::VectorXd::Ones(Eigen::Index(n));
+  const Eigen::VectorXd diagonal = N.diagonal();
+  CHECK_MESSAGE(row_sums.cwiseAbs().maxCoeff() <= 1e-9 * diagonal.cwiseAbs().maxCoeff(),
+                name << ": rows of N do not sum to 0");
+
+  // Reconstruction from its own NS returns the mesh (up to rounding).
+  {
+    Mesh copy = mesh;
+    std::map<Vertex, double> ns;
+    for(Vertex v : mesh.vertices())
+      ns[v] = ncc.normal_signature(v);
+    HD::reconstruct_from_normal_signature(copy, boost::make_assoc_property_map(ns));
+    double worst = 0;
+    for(Vertex v : mesh.vertices())
+    {
+      const Point& a = mesh.point(v);
+      const Point& b = copy.point(v);
+      worst = (std::max)({worst, std::abs(a.x() - b.x()), std::abs(a.y() - b.y()), std::abs(a.z() - b.z())});
+    }
+    // compared in units of the mesh size (the coordinates may be 1e300 or 1e-300)
+    double extent = 0;
+    for(Vertex v : mesh.vertices())
+      extent = (std::max)({extent, std::abs(mesh.point(v).x()), std::abs(mesh.point(v).y()),
+                           std::abs(mesh.point(v).z())});
+    CHECK_MESSAGE(std::isfinite(worst) && worst <= 1e-6 * extent,
+                  name << ": reconstruction from the own NS moved a vertex by " << worst << " (extent " << extent
+                       << ")");
+  }
+
+  // The kernel, with the default sigma, an isotropic one and the scale-invariant one;
+  // m = 10 is more than most corpus meshes have vertices (it is clamped).
+  const std::vector<std::size_t> component = component_of_vertex(mesh);
+  const std::size_t components = *std::max_element(component.begin(), component.end()) + 1;
+  for(int variant = 0; variant < 3; ++variant)
+  {
+    const std::string label = name + (variant == 0 ? " (sigma 0.1)" : variant == 1 ? " (sigma inf)" : " (eq. 14)");
+    const Kernel kernel(mesh, HD::parameters::combine(HD::parameters::number_of_eigenpairs(10),
+                                                      HD::parameters::sigma(variant == 1 ? inf : 0.1),
+                                                      HD::parameters::scale_invariant_kernel(variant == 2)));
+    const std::size_t m = kernel.number_of_eigenpairs();
+    CHECK_MESSAGE(m == (std::min)(std::size_t(10), n), label << ": m = " << m << ", expected min(10, n)");
+    CHECK_MESSAGE(kernel.number_of_connected_components() == components,
+                  label << ": " << kernel.number_of_connected_components() << " components, expected " << components);
+    const Eigen::VectorXd& lambda = kernel.eigenvalues();
+    const Eigen::MatrixXd& phi = kernel.eigenvectors();
+    CHECK_MESSAGE(all_finite(lambda) && all_finite(phi), label << ": eigenpairs not finite");
+    const double top = (std::max)(1., std::abs(lambda[lambda.size() - 1]));
+    CHECK_MESSAGE(lambda.minCoeff() >= -1e-8 * top, label << ": negative eigenvalue " << lambda.minCoeff());
+    std::size_t zeros = 0;
+    for(Eigen::Index k = 0; k < lambda.size(); ++k)
+      zeros += std::abs(lambda[k]) <= 1e-8 * top ? 1 : 0;
+    CHECK_MESSAGE(zeros >= (std::min)(components, m), label << ": " << zeros << " zero eigenvalues for "
+                                                            << components << " components");
+    const Eigen::MatrixXd gram = phi.transpose() * (kernel.mass_matrix() * phi);
+    CHECK_MESSAGE((gram - Eigen::MatrixXd::Identity(Eigen::Index(m), Eigen::Index(m))).cwiseAbs().maxCoeff() <= 1e-8,
+                  label << ": eigenvectors not B-orthonormal");
+    bool kernel_finite = true;
+    for(Vertex v : mesh.vertices())
+      kernel_finite = kernel_finite && std::isfinite(kernel.heat_kernel_signature(v, 1.)) &&
+                      std::isfinite(kernel.heat_kernel_signature(v, 1e-3)) &&
+                      std::isfinite(kernel.heat_kernel_signature(v, 1e6));
+    CHECK_MESSAGE(kernel_finite, label << ": heat kernel signature not finite");
+
+    // Diffusion: finite, conserving the heat of every connected component (A_t does
+    // not carry heat between components), for small and large t.
+    for(double t : {1e-3, 1., 1e3})
+    {
+      const Diffusion diffusion(kernel, t);
+      Eigen::VectorXd f0(static_cast<Eigen::Index>(n));
+      for(Eigen::Index i = 0; i < f0.size(); ++i)
+        f0[i] = 2. + std::sin(double(i));
+      const std::vector<Eigen::VectorXd> fields = diffusion.diffuse(f0, std::vector<std::size_t>{0, 1, 7, 60});
+      bool fields_finite = true;
+      double worst_leak = 0;
+      for(const Eigen::VectorXd& f : fields)
+      {
+        fields_finite = fields_finite && f.allFinite();
+        std::vector<double> before(components, 0.), after(components, 0.);
+        for(Vertex v : mesh.vertices())
+        {
+          before[component[v.idx()]] += f0[Eigen::Index(kernel.vertex_index(v))];
+          after[component[v.idx()]] += f[Eigen::Index(kernel.vertex_index(v))];
+        }
+        for(std::size_t c = 0; c < components; ++c)
+          worst_leak = (std::max)(worst_leak, std::abs(after[c] - before[c]) / std::abs(before[c]));
+      }
+      CHECK_MESSAGE(fields_finite, label << ", t = " << t << ": diffused field not finite");
+      CHECK_MESSAGE(worst_leak <= 1e-12, label << ", t = " << t << ": heat of a component changed by " << worst_leak);
+
+      // Features at k = 0 and k = 7: valid vertices, finite.
+      if(variant == 0 && t == 1.)
+      {
+        std::map<Vertex, double> field;
+        for(Vertex v : mesh.vertices())
+          field[v] = f0[Eigen::Index(kernel.vertex_index(v))];
+        const auto features =
+            HD::detect_multiscale_features(diffusion, boost::make_assoc_property_map(field), {0, 7});
+        bool valid = features.size() == 2;
+        for(const auto& scale : features)
+          for(const auto* list : {&scale.convex, &scale.concave})
+            for(Vertex v : *list)
+              valid = valid && mesh.is_valid(v) && !mesh.is_removed(v);
+        CHECK_MESSAGE(valid, label << ": invalid feature vertices");
+      }
+    }
+  }
+}
+
+// One mesh of the corpus and its documented outcome through the API.
+struct Corpus_case
+{
+  std::string file;
+  bool readable;      // CGAL::IO::read_OFF into a Surface_mesh succeeds
+  std::string error;  // empty: the package gives a result; else a fragment of the std::invalid_argument
+};
+
+std::vector<Corpus_case> corpus()
+{
+  return {
+      // accepted meshes: a result, checked by check_accepted_mesh()
+      {"needle.off", true, ""},
+      {"duplicated_vertex.off", true, ""},  // a seam: both copies are boundary vertices
+      {"two_neighbours.off", true, ""},
+      {"two_components.off", true, ""},
+      {"three_components.off", true, ""},
+      {"single_triangle.off", true, ""},
+      {"open_strip.off", true, ""},
+      {"hole.off", true, ""},
+      {"octahedron.off", true, ""},
+      {"huge_coordinates.off", true, ""},
+      {"tiny_coordinates.off", true, ""},
+      // rejected by the package, with a message that names the element
+      {"quad_faces.off", true, "face 0 has 4 vertices"},
+      {"zero_area.off", true, "face 0 (vertices 0, 1, 2) has zero area"},
+      {"isolated_vertex.off", true, "vertex 4 is isolated"},
+      {"pillow.off", true, "vertex 0 has no usable normal"},
+      // rejected by CGAL's reader (not a manifold mesh, or not a valid OFF file)
+      {"nonmanifold_edge.off", false, ""},
+      {"nonmanifold_vertex.off", false, ""},
+      {"nan_coordinate.off", false, ""},
+      {"inf_coordinate.off", false, ""},
+      {"overflow_coordinate.off", false, ""},
+      {"truncated.off", false, ""},
+      {"header_only.off", false, ""},
+      {"garbage.off", false, ""},
+      {"negative_index.off", false, ""},
+      {"index_out_of_range.off", false, ""},
+      {"fractional_index.off", false, ""},
+      {"missing_normal.off", false, ""},
+  };
+}
+
+void check_corpus()
+{
+  for(const Corpus_case& c : corpus())
+  {
+    Mesh mesh;
+    const bool readable = read_mesh(c.file, mesh);
+    CHECK_MESSAGE(readable == c.readable, c.file << ": read_OFF returned " << readable);
+    if(!readable || !c.readable)
+      continue;
+    if(c.error.empty())
+    {
+      try
+      {
+        check_accepted_mesh(mesh, c.file);
+      }
+      catch(const std::exception& e)
+      {
+        CHECK_MESSAGE(false, c.file << ": unexpected exception " << e.what());
+      }
+      continue;
+    }
+    // Every entry point rejects the mesh with the same message.
+    std::map<Vertex, double> values;
+    std::map<Vertex, K::Vector_3> vectors;
+    for(Vertex v : mesh.vertices())
+      values[v] = 1.;
+    auto ns_map = boost::make_assoc_property_map(values);
+    CHECK_THROWS(HD::Normal_controlled_coordinates<Mesh>{mesh}, std::invalid_argument, c.error);
+    CHECK_THROWS(HD::compute_normal_signature(mesh, ns_map), std::invalid_argument, c.error);
+    CHECK_THROWS(HD::compute_normal_controlled_coordinates(mesh, boost::make_assoc_property_map(vectors)),
+                 std::invalid_argument, c.error);
+    CHECK_THROWS(HD::normal_controlled_coordinates_matrix(mesh), std::invalid_argument, c.error);
+    Mesh copy = mesh;
+    CHECK_THROWS(HD::reconstruct_from_normal_signature(copy, ns_map), std::invalid_argument, c.error);
+    CHECK_THROWS(Kernel(mesh, HD::parameters::number_of_eigenpairs(5)), std::invalid_argument, c.error);
+    CHECK_THROWS(Diffusion(mesh, HD::parameters::number_of_eigenpairs(5)), std::invalid_argument, c.error);
+    CHECK_THROWS(HD::anisotropic_heat_diffusion(mesh, ns_map, ns_map, HD::parameters::number_of_eigenpairs(5)),
+                 std::invalid_argument, c.error);
+    std::vector<Vertex> convex, concave;
+    CHECK_THROWS(HD::detect_multiscale_features(mesh, ns_map, std::back_inserter(convex), std::back_inserter(concave),
+                                                HD::parameters::number_of_steps(2)),
+                 std::invalid_argument, c.error);
+  }
+}
+
+// Non-manifold polygon soups: not a polygon mesh as they are; the documented repair
+// (PMP::orient_polygon_soup duplicates non-manifold vertices and edges) gives a mesh
+// the package processes.
+void check_polygon_soups()
+{
+  for(const std::string file : {"nonmanifold_edge.off", "nonmanifold_vertex.off"})
+  {
+    std::vector<Point> points;
+    std::vector<std::vector<std::size_t> > polygons;
+    std::ifstream is(corpus_path(file));
+    CHECK_MESSAGE(CGAL::IO::read_OFF(is, points, polygons), file << ": not read as a polygon soup");
+    CHECK_MESSAGE(!PMP::is_polygon_soup_a_polygon_mesh(polygons), file << ": the soup is a polygon mesh");
+    PMP::orient_polygon_soup(points, polygons);
+    CHECK_MESSAGE(PMP::is_polygon_soup_a_polygon_mesh(polygons), file << ": orient_polygon_soup did not repair it");
+    Mesh mesh;
+    PMP::polygon_soup_to_polygon_mesh(points, polygons, mesh);
+    CHECK_MESSAGE(points.size() > 5 && mesh.number_of_vertices() == points.size(),
+                  file << ": no vertex was duplicated");
+    check_accepted_mesh(mesh, file + " (repaired)");
+  }
+}
+
+// The mesh of `file` in the normalised position of the octahedron: NS and
+// eigenvalues do not depend on the scale, even at 1e300 and 1e-300.
+void check_extreme_scales()
+{
+  Mesh reference, huge, tiny;
+  CHECK(read_mesh("octahedron.off", reference));
+  CHECK(read_mesh("huge_coordinates.off", huge));
+  CHECK(read_mesh("tiny_coordinates.off", tiny));
+  const HD::Normal_controlled_coordinates<Mesh> a(reference), b(huge), c(tiny);
+  const Kernel ka(reference), kb(huge), kc(tiny);
+  double worst_ns = 0, worst_lambda = 0;
+  for(Vertex v : reference.vertices())
+    worst_ns = (std::max)({worst_ns, std::abs(a.normal_signature(v) - b.normal_signature(v)),
+                           std::abs(a.normal_signature(v) - c.normal_signature(v))});
+  for(Eigen::Index k = 0; k < ka.eigenvalues().size(); ++k)
+    worst_lambda = (std::max)({worst_lambda, std::abs(ka.eigenvalues()[k] - kb.eigenvalues()[k]),
+                               std::abs(ka.eigenvalues()[k] - kc.eigenvalues()[k])});
+  CHECK_MESSAGE(worst_ns <= 1e-9, "NS at 1e300 / 1e-300 differ from the unit octahedron's by " << worst_ns);
+  CHECK_MESSAGE(worst_lambda <= 1e-9, "eigenvalues at 1e300 / 1e-300 differ by " << worst_lambda);
+  // The Voronoi areas are in user units: 1e600 overflows, 1e-600 underflows; the
+  // package reports what a double can hold (inf, 0) but computes everything else
+  // in its normalised frame.
+  bool finite_normals = true;
+  for(Vertex v : huge.vertices())
+    finite_normals = finite_normals && std::isfinite(b.normal(v).squared_length());
+  CHECK(finite_normals);
+}
+
+// Meshes built point by point: non-finite coordinates, the empty mesh.
+Mesh triangle_pair(const Point& last)
+{
+  Mesh mesh;
+  const Vertex a = mesh.add_vertex(Point(0, 0, 0)), b = mesh.add_vertex(Point(1, 0, 0)),
+               c = mesh.add_vertex(Point(1, 1, 0)), d = mesh.add_vertex(last);
+  mesh.add_face(a, b, c);
+  mesh.add_face(a, c, d);
+  return mesh;
+}
+
+void check_built_meshes()
+{
+  for(const Point& p : {Point(0, 1, nan), Point(inf, 1, 0), Point(0, -inf, 0)})
+  {
+    const Mesh mesh = triangle_pair(p);
+    CHECK_THROWS(HD::Normal_controlled_coordinates<Mesh>{mesh}, std::invalid_argument,
+                 "vertex 3 has a non-finite coordinate");
+    CHECK_THROWS(Kernel{mesh}, std::invalid_argument, "vertex 3 has a non-finite coordinate");
+  }
+  // 1e308: differences of coordinates overflow, the normalised frame does not.
+  {
+    Mesh mesh;
+    const double x = 1.7e308;
+    const Vertex a = mesh.add_vertex(Point(-x, -x, 0)), b = mesh.add_vertex(Point(x, -x, 0)),
+                 c = mesh.add_vertex(Point(x, x, x)), d = mesh.add_vertex(Point(-x, x, 0));
+    mesh.add_face(a, b, c);
+    mesh.add_face(a, c, d);
+    const HD::Normal_controlled_coordinates<Mesh> ncc(mesh);
+    bool finite = true;
+    for(Vertex v : mesh.vertices())
+      finite = finite && std::isfinite(ncc.normal_signature(v));
+    CHECK_MESSAGE(finite, "NS not finite with coordinates of 1.7e308");
+    check_accepted_mesh(mesh, "coordinates of 1.7e308");
+  }
+  // Subnormal coordinates (1e-310): the normalised frame is exact, the NS those of
+  // the octahedron.
+  {
+    Mesh reference, mesh;
+    CHECK(read_mesh("octahedron.off", reference));
+    mesh = reference;
+    for(Vertex v : mesh.vertices())
+      mesh.point(v) = CGAL::ORIGIN + (mesh.point(v) - CGAL::ORIGIN) * 1e-310;
+    const HD::Normal_controlled_coordinates<Mesh> a(reference), b(mesh);
+    double worst = 0;
+    for(Vertex v : mesh.vertices())
+      worst = (std::max)(worst, std::abs(a.normal_signature(v) - b.normal_signature(v)));
+    CHECK_MESSAGE(worst <= 1e-9, "NS at 1e-310 differ from the octahedron's by " << worst);
+    check_accepted_mesh(mesh, "coordinates of 1e-310");
+  }
+  // A face that is tiny next to the rest of the mesh has zero area in double.
+  CHECK_THROWS(HD::Normal_controlled_coordinates<Mesh>{triangle_pair(Point(-1.5e308, 1.7e308, 1e308))},
+               std::invalid_argument, "face 0 (vertices 0, 1, 2) has zero area");
+  // The empty mesh: nothing to compute, no kernel.
+  {
+    const Mesh empty;
+    std::map<Vertex, double> ns;
+    HD::compute_normal_signature(empty, boost::make_assoc_property_map(ns));
+    CHECK(ns.empty());
+    CHECK_THROWS(Kernel{empty}, std::invalid_argument, "the mesh is empty");
+  }
+  // A null user normal.
+  {
+    const Mesh mesh = triangle_pair(Point(0, 1, 0.5));
+    std::map<Vertex, K::Vector_3> normals;
+    for(Vertex v : mesh.vertices())
+      normals[v] = K::Vector_3(0, 0, 1);
+    normals[Vertex(2)] = K::Vector_3(0, 0, 0);
+    CHECK_THROWS(HD::Normal_controlled_coordinates<Mesh>(
+                     mesh, CGAL::parameters::vertex_normal_map(boost::make_assoc_property_map(normals))),
+                 std::invalid_argument, "vertex 2 has no usable normal");
+    normals[Vertex(2)] = K::Vector_3(0, nan, 1);
+    CHECK_THROWS(HD::Normal_controlled_coordinates<Mesh>(
+                     mesh, CGAL::parameters::vertex_normal_map(boost::make_assoc_property_map(normals))),
+                 std::invalid_argument, "vertex 2 has no usable normal");
+  }
+}
+
+// m > n, sigma <= 0, t <= 0, k < 0, non-finite fields, and the like.
+void check_parameters()
+{
+  Mesh mesh;
+  CHECK(read_mesh("two_components.off", mesh));
+  const std::size_t n = mesh.number_of_vertices();
+  std::map<Vertex, double> values;
+  for(Vertex v : mesh.vertices())
+    values[v] = double(v.idx());
+  auto field = boost::make_assoc_property_map(values);
+
+  // m larger than the vertex count: clamped.
+  for(std::size_t m : {n, n + 1, std::size_t(1000), std::numeric_limits<std::size_t>::max()})
+    CHECK_MESSAGE(Kernel(mesh, HD::parameters::number_of_eigenpairs(m)).number_of_eigenpairs() == n,
+                  "m = " << m << " is not clamped to " << n);
+  CHECK_THROWS(Kernel(mesh, HD::parameters::number_of_eigenpairs(0)), std::invalid_argument,
+               "number_of_eigenpairs must be positive");
+  CHECK_THROWS(Kernel(mesh, HD::parameters::number_of_eigenpairs(-1)), std::invalid_argument,
+               "number_of_eigenpairs must be positive");
+
+  // sigma <= 0 or NaN.
+  for(double sigma : {0., -0., -1., -inf, nan})
+    CHECK_THROWS(Kernel(mesh, HD::parameters::sigma(sigma)), std::invalid_argument, "sigma must be positive");
+  // a tiny positive sigma: every weight underflows to 0 but nothing breaks
+  check_accepted_mesh(mesh, "two_components.off");
+  {
+    const Kernel kernel(mesh, HD::parameters::sigma(1e-300));
+    CHECK(kernel.eigenvalues().allFinite() && kernel.eigenvectors().allFinite());
+    const Diffusion diffusion(kernel, 1.);
+    Eigen::VectorXd f0 = Eigen::VectorXd::LinSpaced(Eigen::Index(n), 1., 2.);
+    const Eigen::VectorXd f = diffusion.diffuse(f0, 10);
+    CHECK_MESSAGE(f.allFinite() && std::abs(f.sum() - f0.sum()) <= 1e-12 * f0.sum(), "sigma = 1e-300: " << f.transpose());
+  }
+
+  // t <= 0, infinite or NaN.
+  const Kernel kernel(mesh, HD::parameters::number_of_eigenpairs(8));
+  for(double t : {0., -0., -1., inf, -inf, nan})
+  {
+    CHECK_THROWS(Diffusion(kernel, t), std::invalid_argument, "time must be positive and finite");
+    CHECK_THROWS(Diffusion(mesh, HD::parameters::time(t)), std::invalid_argument, "time must be positive and finite");
+  }
+  // a huge and a tiny t: finite fields
+  for(double t : {1e-300, 1e300})
+  {
+    const Eigen::VectorXd f = Diffusion(kernel, t).diffuse(Eigen::VectorXd::Ones(Eigen::Index(n)), 3);
+    CHECK_MESSAGE(f.allFinite() && std::abs(f.sum() - double(n)) <= 1e-12 * double(n), "t = " << t);
+  }
+
+  // k < 0 (the named parameter is signed when the user passes an int).
+  CHECK_THROWS(HD::anisotropic_heat_diffusion(mesh, field, field, HD::parameters::number_of_steps(-1)),
+               std::invalid_argument, "number_of_steps must not be negative");
+  std::vector<Vertex> convex, concave;
+  CHECK_THROWS(HD::detect_multiscale_features(mesh, field, std::back_inserter(convex), std::back_inserter(concave),
+                                              HD::parameters::number_of_steps(-2)),
+               std::invalid_argument, "number_of_steps must not be negative");
+  // k = 0: the field itself
+  {
+    std::map<Vertex, double> out;
+    HD::anisotropic_heat_diffusion(mesh, field, boost::make_assoc_property_map(out),
+                                   HD::parameters::number_of_steps(0));
+    bool same = true;
+    for(Vertex v : mesh.vertices())
+      same = same && out[v] == values[v];
+    CHECK_MESSAGE(same, "k = 0 changed the field");
+  }
+
+  // Fields with NaN or infinity, of the wrong size.
+  const Diffusion diffusion(kernel, 1.);
+  for(double bad : {nan, inf})
+  {
+    Eigen::VectorXd f = Eigen::VectorXd::Ones(Eigen::Index(n));
+    f[3] = bad;
+    CHECK_THROWS(diffusion.diffuse(f, 2), std::invalid_argument, "field value at vertex 3 is not finite");
+    std::map<Vertex, double> bad_values = values;
+    bad_values[Vertex(5)] = bad;
+    CHECK_THROWS(HD::reconstruct_from_normal_signature(mesh, boost::make_assoc_property_map(bad_values)),
+                 std::invalid_argument, "normal signature of vertex 5 is not finite");
+    CHECK_THROWS(HD::detect_multiscale_features(diffusion, boost::make_assoc_property_map(bad_values), {0, 1}),
+                 std::invalid_argument, "detect_multiscale_features");
+  }
+  CHECK_THROWS(diffusion.diffuse(Eigen::VectorXd::Ones(Eigen::Index(n + 1)), 2), std::invalid_argument,
+               "the field has the wrong size");
+  for(double w : {0., -1., inf, nan})
+    CHECK_THROWS(HD::reconstruct_from_normal_signature(mesh, field, HD::parameters::anchor_weight(w)),
+                 std::invalid_argument, "anchor_weight must be positive and finite");
+}
+
+// The iterative eigensolver (n > 400) on three components: a zero eigenvalue of
+// multiplicity 3, the hard case of Lanczos.
+void check_iterative_solver_on_components()
+{
+  Mesh sphere;
+  CGAL::make_icosahedron(sphere, Point(0, 0, 0), 1.);
+  CGAL::Subdivision_method_3::Loop_subdivision(sphere, CGAL::parameters::number_of_iterations(2));
+  Mesh mesh;
+  for(int c = 0; c < 3; ++c)
+  {
+    Mesh copy = sphere;
+    for(Vertex v : copy.vertices())
+      copy.point(v) = copy.point(v) + K::Vector_3(3. * c, 0.1 * c, 0) + 0.05 * std::sin(double(v.idx())) *
+                                                                      (copy.point(v) - CGAL::ORIGIN);
+    CGAL::copy_face_graph(copy, mesh);
+  }
+  CHECK_MESSAGE(mesh.number_of_vertices() > 400, "only " << mesh.number_of_vertices() << " vertices");
+  const Kernel kernel(mesh, HD::parameters::number_of_eigenpairs(10));
+  CHECK(!kernel.used_dense_solver());
+  check_accepted_mesh(mesh, "three subdivided spheres");
+}
+
+} // namespace
+
+int main()
+{
+  try
+  {
+    check_corpus();
+    check_polygon_soups();
+    check_extreme_scales();
+    check_built_meshes();
+    check_parameters();
+    check_iterative_solver_on_components();
+  }
+  catch(const std::exception& e)
+  {
+    std::cerr << "unexpected exception: " << e.what() << std::endl;
+    test_support::check(false, "no unexpected exception", __FILE__, __LINE__);
+  }
+  return test_support::report("test_hostile_input");
+}
