@@ -220,7 +220,7 @@ def view_direction(elev, azim):
 
 # --------------------------------------------------------------------------- mesh pictures
 
-def draw_mesh(ax, mesh, elev, azim, points=None, title=None, zoom=1.3):
+def draw_mesh(ax, mesh, elev, azim, points=None, title=None, zoom=1.2):
     tri = mesh.triangles
     colors = mesh.colors()
     if colors is None:
@@ -252,12 +252,15 @@ def draw_mesh(ax, mesh, elev, azim, points=None, title=None, zoom=1.3):
     ax.view_init(elev=elev, azim=azim)
     ax.set_axis_off()
     if points:
+        # Dots over the surface: draw in zorder, not by mplot3d's depth of each collection.
+        ax.computed_zorder = False
+        coll.set_zorder(1)
         vn = vertex_normals(mesh)
         for indices, color in points:
             idx = np.asarray(sorted(set(int(i) for i in indices)), dtype=np.int64)
             if len(idx) == 0:
                 continue
-            idx = idx[vn[idx] @ eye > 0.05]  # those facing the viewer
+            idx = idx[vn[idx] @ eye > 0.0]  # those facing the viewer
             q = mesh.points[idx] + 0.004 * 2 * half * vn[idx]
             ax.scatter(q[:, 0], q[:, 1], q[:, 2], s=22, c=[color], edgecolors="black",
                        linewidths=0.5, depthshade=False, zorder=10)
@@ -312,36 +315,52 @@ def cmd_mesh(args):
 
 # --------------------------------------------------------------------------- heat plot
 
+def _sigma_name(summary):
+    sigma = summary.get("sigma")
+    return "sigma = inf (isotropic)" if sigma is None or sigma == float("inf") else f"sigma = {sigma:g}"
+
+
+def _drift(series):
+    """k values and |H_k / H_0 - 1|, floored at 1e-17 for the log scale."""
+    ks = sorted(int(k) for k in series)
+    h0 = series[str(ks[0])]
+    return ks, [max(abs(series[str(k)] / h0 - 1.0), 1e-17) for k in ks]
+
+
 def cmd_heat(args):
     labels = args.labels.split("|") if args.labels else None
     fig, ax = plt.subplots(figsize=(6.4, 4.0), dpi=args.dpi)
-    styles = ["-o", "-s", "-^", "-D"]
+    markers = "osD^v"
     any_baseline = False
     for i, path in enumerate(args.inputs):
         with open(path) as fh:
             summary = json.load(fh)
-        name = labels[i] if labels else f"sigma = {summary.get('sigma')}"
+        name = labels[i] if labels else _sigma_name(summary)
         heat = summary.get("total_heat", {})
-        ks = sorted(int(k) for k in heat)
-        if not ks:
+        if not heat:
             raise ValueError(f"{path}: no 'total_heat'")
-        h0 = heat[str(ks[0])]
-        ax.plot(ks, [heat[str(k)] / h0 for k in ks], styles[i % len(styles)], ms=4,
-                label=f"local diffusion, {name}")
+        ks, drift = _drift(heat)
+        ax.plot(ks, drift, "-" + markers[i % len(markers)], ms=4, color=f"C{i}",
+                label=f"local diffusion (this package), {name}")
         baseline = summary.get("global_total_heat") or summary.get("baseline_total_heat")
         if baseline:
             any_baseline = True
-            kb = sorted(int(k) for k in baseline)
-            b0 = baseline[str(kb[0])]
-            ax.plot(kb, [baseline[str(k)] / b0 for k in kb], "--" + styles[i % len(styles)][1:], ms=4,
+            kb, db = _drift(baseline)
+            ax.plot(kb, db, "--" + markers[i % len(markers)], ms=4, color=f"C{i}", mfc="white",
                     label=f"global spectral smoothing, {name}")
+    ax.set_yscale("log")
+    ax.set_xscale("symlog", linthresh=1)
+    ax.set_xlim(left=0)
+    ax.set_ylim(bottom=5e-18)
+    ax.axhline(np.finfo(float).eps, color="grey", lw=0.8, ls=":")
+    ax.text(ax.get_xlim()[1], np.finfo(float).eps * 1.3, "machine epsilon ", ha="right", va="bottom",
+            fontsize=7, color="grey")
     ax.set_xlabel("diffusion steps k")
-    ax.set_ylabel("total heat / total heat at k = 0")
-    ax.set_title("Heat conservation" + ("" if any_baseline else " (no global baseline in the JSON)"),
-                 fontsize=11)
-    ax.grid(True, alpha=0.3)
-    ax.ticklabel_format(axis="y", useOffset=False)
-    ax.legend(fontsize=8)
+    ax.set_ylabel("relative drift of the total heat  |H(k)/H(0) - 1|")
+    ax.set_title("Heat conservation (paper, Fig. 5)" + ("" if any_baseline else
+                 "\n(the global baseline is not in the JSON)"), fontsize=10)
+    ax.grid(True, alpha=0.3, which="both")
+    ax.legend(fontsize=8, loc="best")
     fig.tight_layout()
     save(fig, args.output)
 
@@ -391,7 +410,7 @@ def main():
     m.add_argument("--titles", help="one title per input, separated by '|'")
     m.add_argument("--caption")
     m.add_argument("--view", default="25,-60", help="ELEV,AZIM in degrees (default 25,-60)")
-    m.add_argument("--zoom", type=float, default=1.3, help="zoom of the 3D box (default 1.3)")
+    m.add_argument("--zoom", type=float, default=1.2, help="zoom of the 3D box (default 1.2)")
     m.add_argument("--size", type=float, default=4.0, help="inches per picture (default 4)")
     m.add_argument("--dpi", type=int, default=100)
     m.add_argument("--points-property", help="dots at the vertices where this property is > 0 (red) or < 0 (blue)")

@@ -5,3 +5,4 @@ cd "$(dirname "$0")/.."
 bash scripts/setup.sh
 cd build
 ctest --output-on-failure -j "$(nproc)"
+bash ../scripts/sanitize_and_fuzz.sh  # ASan + UBSan suite in build/sanitize/, then 60 s of fuzzing

@@ -263,7 +263,12 @@ inline Json_object timings_json(const Stage_timer& timer)
 // Leaves `is` at an unspecified position.
 inline void check_off_stream(std::istream& is, std::uintmax_t size)
 {
-  auto fail = [](const std::string& what) { throw Input_error("broken OFF file: " + what); };
+  auto fail = [](const std::string& what) { throw Input_error("cannot read the OFF file: " + what); };
+  auto text = [](double x) {
+    std::ostringstream os;
+    os << std::setprecision(17) << x;
+    return os.str();
+  };
   const double byte_bound = double(size);
   // CGAL's header: '#' comment lines, then a keyword [ST][C][N][4][n]OFF (or SKEL).
   char c = 0;
@@ -321,10 +326,8 @@ inline void check_off_stream(std::istream& is, std::uintmax_t size)
     }
     if(!(x >= lowest && x <= highest))
     {
-      std::ostringstream os;
-      os << "the " << what << " " << x << " is out of range (" << lowest << " to " << highest
-         << " for a file of " << size << " bytes)";
-      fail(os.str());
+      fail(std::string("the ") + what + " " + text(x) + " is out of range (" + text(lowest) + " to " +
+           text(std::floor(highest)) + " for a file of " + std::to_string(size) + " bytes)");
     }
     return std::size_t(x);
   };
@@ -405,16 +408,14 @@ inline void check_off_stream(std::istream& is, std::uintmax_t size)
     const std::string element = "face " + std::to_string(f);
     next_line(element);
     if(entries.empty() || !is_integer_in(entries[0], 0, double(entries.size()) - 1))
-      fail(element + " declares " + (entries.empty() ? std::string("no") : std::to_string(entries[0])) +
+      fail(element + " declares " + (entries.empty() ? std::string("no") : text(entries[0])) +
            " vertices, but its line has " + std::to_string(entries.empty() ? 0 : entries.size() - 1) + " indices");
     const std::size_t k = std::size_t(entries[0]);
     for(std::size_t j = 1; j <= k; ++j)
       if(!is_integer_in(entries[j], 0, double(nv) - 1))
-      {
-        std::ostringstream os;
-        os << element << " has the vertex index " << entries[j] << ", not one of 0.." << (nv == 0 ? 0 : nv - 1);
-        fail(nv == 0 ? element + " has a vertex index, but the file has no vertices" : os.str());
-      }
+        fail(nv == 0 ? element + " has a vertex index, but the file has no vertices"
+                     : element + " has the vertex index " + text(entries[j]) + ", not one of 0.." +
+                           std::to_string(nv - 1));
     if(colors)
       check_color(k + 1, element, face_colors);
   }
@@ -599,6 +600,7 @@ void write_fields_ply(const std::string& path, const CGAL::Surface_mesh<Point>& 
       colors[v] = diverging_color(fields.front().second[v.idx()], half_range);
   }
   write_atomically(path, [&](std::ostream& os) {
+    CGAL::IO::set_binary_mode(os);  // use_binary_mode() alone is ignored on streams: ASCII, 6 digits
     return CGAL::IO::write_PLY(os, mesh, "written by CGAL Heat_diffusion",
                                CGAL::parameters::use_binary_mode(true));
   });

@@ -14,13 +14,14 @@
 #include <Eigen/Core>
 #include <Eigen/Eigenvalues>
 #include <Eigen/Sparse>
+#include <Eigen/SparseCholesky>
 
 #include <algorithm>
 #include <cmath>
 #include <cstdint>
 #include <functional>
 #include <limits>
-#include <queue>
+#include <stdexcept>
 #include <utility>
 #include <vector>
 
@@ -30,65 +31,65 @@ namespace internal {
 
 // Which mass matrix the local kernel uses. `consistent` is the FEM mass matrix B of
 // eq. 11, the operator of the spectral kernel; `lumped` replaces it by its row sums
-// (a diagonal matrix) and is kept to measure what lumping costs in accuracy.
+// M = diag(B 1). Lumping changes the kernel by 4 to 6 % at t = 1 on CGAL's meshes (see
+// the user manual), far more than the tolerance, so the package uses `consistent`;
+// `lumped` is kept to measure that difference.
 enum class Local_kernel_mass { consistent, lumped };
 
 // Columns of the heat kernel H_t = exp(-t B^-1 L) B^-1 of the pencil (L, B), one source
-// at a time, without eigenpairs.
+// at a time, without eigenpairs and without truncating the spectrum.
 //
 // Locality. On the surface rescaled to area = n, the column of v_j decays like a
-// Gaussian of the distance to v_j: for t = 1 it is above 1e-5 of its peak on about 150
-// vertices only, whatever the size of the mesh. The column is computed on a patch P
-// around v_j with a zero (absorbing) condition outside: a ball of the diffusion metric
-// below, whose radius grows with sqrt(t ln(1/tolerance)). The heat the patch loses
-// through its border measures the truncation: the exact column carries a total heat
-// 1^T B h = 1, so 1 - 1^T B_P h_P is checked against the tolerance, and the patch is
-// enlarged when it is too small (a mesh whose sampling changes fast, say).
+// Gaussian of the distance to v_j: for t = 1 it is above 1e-4 of its peak on a few
+// hundred vertices only, whatever the size of the mesh. The column is computed on a
+// patch P around v_j with a zero (absorbing) condition outside: a ball of the metric of
+// diffusion_length(), whose radius grows with sqrt(t ln(1/tolerance)). The heat lost
+// through the border of the patch measures the truncation: the exact column carries
+// the total heat 1^T B h = 1, so |1 - 1^T B_P h_P| is checked against the tolerance and
+// the patch is enlarged until it passes (where the sampling changes fast, say).
 //
-// Krylov subspace. With the lumped mass M = diag(B 1), S = M^-1/2 L_P M^-1/2 is
-// symmetric and cheap to apply. Lanczos on S from e_j (with full reorthogonalisation,
-// so that the basis stays orthonormal) gives an orthonormal Q and a tridiagonal
-// T = Q^T S Q. The *consistent* pencil is then projected on V = M^-1/2 Q (a Galerkin,
-// or Rayleigh-Ritz, step): L_V = T, B_V = Q^T (M^-1/2 B_P M^-1/2) Q, and
-//   h_P = V exp(-t B_V^-1 L_V) B_V^-1 V^T e_j ,
-// which is the Galerkin solution of B u' = -L u, B u(0) = e_j on span V. No linear
-// system with B is ever solved, and the eigenvalues of M^-1 B lie in [1/4, 1] (they do
-// on every triangle), so B_V is well conditioned. The subspace grows until the
-// coefficients of its newest vectors fall below the tolerance. (Krylov with B^-1 L
-// itself would need an inner solve with B at every step, 10-15 times the work.)
+// Krylov subspace. B^-1 L is self-adjoint in the inner product of B, so Lanczos in that
+// inner product, started from B_P^-1 e_j, gives a B_P-orthonormal V and a tridiagonal
+// T = V^T L_P V with h_P ~ |B_P^-1 e_j|_B V exp(-tT) e_1. Each step solves with B_P,
+// through a sparse Cholesky factorisation of the patch. (Krylov subspaces of cheaper
+// operators -- the lumped M^-1 L, or B^-1 replaced by a few Chebyshev or Neumann
+// terms -- projected on the consistent pencil, stall at 1e-4 to 5e-3: the consistent
+// kernel is not a function of those operators on an irregular mesh.) No
+// reorthogonalisation: Lanczos approximations of f(A) b are stable under the loss of
+// orthogonality (Druskin and Knizhnerman 1991; Musco, Musco and Sidford 2018). The
+// subspace grows until the coefficients of the newest vectors fall below the tolerance.
 //
-// Cost per column: O(k p) for the patch of p vertices and k Krylov vectors, plus O(k^3)
-// for the projected problem; p grows like t, k like sqrt(t). Linear in n for fixed t.
+// Cost per column: a sparse factorisation of the p x p patch and k steps of O(p)
+// (k = 20 to 30 at t = 1); p grows like t, k like sqrt(t). Linear in n for fixed t.
 class Local_heat_kernel
 {
 public:
   typedef Eigen::SparseMatrix<double> Sparse_matrix;
 
-  // The relative accuracy aimed at by default: heat lost through the patch border,
-  // and size of the newest Krylov coefficients, relative to the column.
-  static constexpr double default_tolerance = 1e-5;
+  // The relative accuracy aimed at by default: heat lost through the patch border, and
+  // size of the newest Krylov coefficients, relative to the column.
+  static constexpr double default_tolerance = 1e-4;
 
   // Everything one column needs, allocated once per thread and reused: the arrays of
   // size n are stamped with a generation instead of being cleared for every source.
   struct Workspace
   {
-    std::vector<std::uint32_t> stamp;      // == generation: the vertex was reached for this source
-    std::vector<std::uint32_t> local;      // its row in the patch (or not_in_patch)
-    std::vector<double> distance;          // tentative Dijkstra distance
+    std::vector<std::uint32_t> stamp;  // == generation: the vertex was reached for this source
+    std::vector<std::uint32_t> local;  // its row in the patch (or not_in_patch)
+    std::vector<double> distance;      // tentative Dijkstra distance
     std::uint32_t generation = 0;
 
-    std::vector<std::uint32_t> patch;      // global indices of the patch, the source first
+    std::vector<std::uint32_t> patch;  // global indices of the patch, the source first
     std::vector<std::pair<double, std::uint32_t> > heap;
-    // The patch matrices in compressed rows, symmetric scaled by M^-1/2: S and B~.
-    std::vector<std::uint32_t> row_begin, column;
-    std::vector<double> stiffness, mass;
-    std::vector<double> inverse_root_mass;  // M^-1/2 on the patch
-    std::vector<double> patch_mass_row_sum; // (B_P 1)_i, for the heat balance
+    std::vector<Eigen::Triplet<double> > entries;
+    Sparse_matrix stiffness, mass;     // L_P and B_P
+    Eigen::VectorXd lumped_mass;       // diag(B 1) on the patch (the global row sums)
+    Eigen::SimplicialLDLT<Sparse_matrix, Eigen::Lower, Eigen::AMDOrdering<int> > cholesky;
 
-    std::vector<double> basis, mass_times_basis;  // Q and B~ Q, column-major p x capacity
+    Eigen::MatrixXd basis, mass_times_basis;  // V and B_P V, p x capacity
     std::vector<double> alpha, beta;
-    Eigen::MatrixXd projected_mass;               // B_V, grown as vectors come
-    std::vector<double> values;                   // the column on the patch
+    Eigen::VectorXd work, coefficients;
+    std::vector<double> values;               // the column on the patch
 
     // What the last column needed (for statistics and tests).
     std::size_t krylov_dimension = 0;
@@ -108,8 +109,8 @@ public:
     for(Eigen::Index j = 0; j < mass.outerSize(); ++j)
       for(Sparse_matrix::InnerIterator it(mass, j); it; ++it)
         lumped_mass_[std::size_t(it.row())] += it.value();
-    // The Gaussian tail of the column beyond distance r is about exp(-r^2 / (c t)) of
-    // its heat, with c = 6 for unit weights in the metric of diffusion_length().
+    // The column beyond distance r holds about exp(-r^2 / (6 t)) of its heat
+    // (unit weights, in the metric of diffusion_length()).
     initial_radius_ = radius_factor * std::sqrt(time * std::log(1. / tolerance));
   }
 
@@ -154,11 +155,10 @@ public:
 private:
   static constexpr double radius_factor = 2.5;
 
-  // Length of the edge ij in the metric in which the kernel spreads like a Gaussian of
-  // unit diffusivity: a random walk with rate w_ij / m_i moves about sqrt(m / w) per
-  // unit time. The patch ignores the weights (w = 1): with a small sigma, B still
-  // couples the vertices that L separates, so heat crosses sharp creases through the
-  // mass matrix.
+  // Length of the edge ik in the metric in which the kernel spreads like a Gaussian:
+  // a random walk with rates w_ik / m_i moves about sqrt(m / w) per unit time. The
+  // patch ignores the weights (w = 1): with a small sigma, B still couples the
+  // vertices that L separates, and heat crosses sharp creases through the mass matrix.
   double diffusion_length(std::size_t i, std::size_t k) const
   {
     return std::sqrt(0.5 * (lumped_mass_[i] + lumped_mass_[k]));
@@ -174,7 +174,7 @@ private:
   }
 
   // The patch: the vertices at distance <= radius from j (Dijkstra over the edges of L),
-  // in the order they are reached. Leaves the heap non-empty if vertices remain outside.
+  // in the order they are reached. Leaves the heap empty iff no vertex is left outside.
   void grow_patch(std::size_t j, double radius, Workspace& w) const
   {
     next_generation(w);
@@ -199,7 +199,7 @@ private:
     {
       const double d = -w.heap.front().first;
       const std::size_t i = w.heap.front().second;
-      if(d > radius)
+      if(d > radius && w.local[i] == not_in_patch)
         break;
       std::pop_heap(w.heap.begin(), w.heap.end());
       w.heap.pop_back();
@@ -214,189 +214,134 @@ private:
           reach(k, d + diffusion_length(i, k));
       }
     }
-    // drop stale entries, so that an empty heap means "nothing left outside"
-    while(!w.heap.empty())
-    {
-      const std::size_t i = w.heap.front().second;
-      if(w.local[i] == not_in_patch)
-        break;
-      std::pop_heap(w.heap.begin(), w.heap.end());
-      w.heap.pop_back();
-    }
   }
 
+  // L_P and B_P: the rows and columns of the patch (a zero condition outside).
   void extract_patch_matrices(Workspace& w) const
   {
-    const std::size_t p = w.patch.size();
-    w.row_begin.assign(1, 0);
-    w.column.clear();
-    w.stiffness.clear();
-    w.mass.clear();
-    w.inverse_root_mass.resize(p);
-    w.patch_mass_row_sum.assign(p, 0.);
-    for(std::size_t a = 0; a < p; ++a)
-      w.inverse_root_mass[a] = 1. / std::sqrt(lumped_mass_[w.patch[a]]);
-    // L and B are symmetric with the same pattern (the mesh edges and the diagonal):
-    // column a of each is row a.
-    for(std::size_t a = 0; a < p; ++a)
+    const Eigen::Index p = Eigen::Index(w.patch.size());
+    w.lumped_mass.resize(p);
+    for(int pass = 0; pass < 2; ++pass)
     {
-      const Eigen::Index g = Eigen::Index(w.patch[a]);
-      Sparse_matrix::InnerIterator l(stiffness_, g), b(mass_, g);
-      for(; l; ++l)
+      const Sparse_matrix& global = pass == 0 ? stiffness_ : mass_;
+      w.entries.clear();
+      for(Eigen::Index a = 0; a < p; ++a)
       {
-        const std::size_t k = std::size_t(l.row());
-        while(b && b.row() < l.row())
-          ++b;
-        const double mass_value = (b && b.row() == l.row()) ? b.value() : 0.;
-        if(w.stamp[k] != w.generation || w.local[k] == not_in_patch)
-          continue;
-        const std::uint32_t c = w.local[k];
-        const double scale = w.inverse_root_mass[a] * w.inverse_root_mass[c];
-        w.column.push_back(c);
-        w.stiffness.push_back(l.value() * scale);
-        w.mass.push_back(mass_value * scale);
-        w.patch_mass_row_sum[a] += mass_value;
+        for(Sparse_matrix::InnerIterator it(global, Eigen::Index(w.patch[std::size_t(a)])); it; ++it)
+        {
+          const std::size_t k = std::size_t(it.row());
+          if(w.stamp[k] == w.generation && w.local[k] != not_in_patch)
+            w.entries.emplace_back(int(w.local[k]), int(a), it.value());
+        }
+        w.lumped_mass[a] = lumped_mass_[w.patch[std::size_t(a)]];
       }
-      w.row_begin.push_back(std::uint32_t(w.column.size()));
+      Sparse_matrix& local = pass == 0 ? w.stiffness : w.mass;
+      local.resize(p, p);
+      local.setFromTriplets(w.entries.begin(), w.entries.end());
     }
   }
 
-  // y = A x for the patch matrix A (`values` = w.stiffness or w.mass).
-  static void multiply(const Workspace& w, const std::vector<double>& values, const double* x, double* y)
+  // x <- B_P^-1 x (or M^-1 x for the lumped kernel).
+  void solve_mass(Workspace& w, Eigen::VectorXd& x) const
   {
-    const std::size_t p = w.patch.size();
-    for(std::size_t a = 0; a < p; ++a)
-    {
-      double sum = 0;
-      for(std::uint32_t e = w.row_begin[a]; e < w.row_begin[a + 1]; ++e)
-        sum += values[e] * x[w.column[e]];
-      y[a] = sum;
-    }
+    if(mass_kind_ == Local_kernel_mass::lumped)
+      x.array() /= w.lumped_mass.array();
+    else
+      x = w.cholesky.solve(x);
   }
 
-  // Krylov dimension at which convergence is first checked, then every `check_step`.
-  std::size_t first_check() const
-  {
-    return std::size_t(8 + std::ceil(4. * std::sqrt(time_)));
-  }
+  // Krylov dimension at which convergence is first checked, then every check_step.
+  std::size_t first_check() const { return std::size_t(12 + std::ceil(6. * std::sqrt(time_))); }
   static constexpr std::size_t check_step = 4;
 
   void solve_on_patch(Workspace& w) const
   {
     extract_patch_matrices(w);
-    const std::size_t p = w.patch.size();
-    std::size_t capacity = (std::min)(p, first_check() + 2 * check_step);
-    w.basis.assign(p * capacity, 0.);
-    w.mass_times_basis.assign(p * capacity, 0.);
+    const Eigen::Index p = Eigen::Index(w.patch.size());
+    if(mass_kind_ == Local_kernel_mass::consistent)
+    {
+      w.cholesky.compute(w.mass);
+      if(w.cholesky.info() != Eigen::Success)
+        throw std::runtime_error("CGAL::Heat_diffusion: the factorisation of a local mass matrix failed");
+    }
+    Eigen::Index capacity = (std::min)(p, Eigen::Index(first_check() + 2 * check_step));
+    w.basis.resize(p, capacity);
+    w.mass_times_basis.resize(p, capacity);
     w.alpha.clear();
     w.beta.clear();
-    w.basis[0] = 1.;  // q_1 = e_j: the source is the first vertex of the patch
-    std::size_t k = 0;   // vectors in the basis
-    std::size_t next_check = (std::min)(first_check(), p);
-    Eigen::VectorXd coefficients;
-    std::vector<double> residual(p);
+
+    // v_1 = B_P^-1 e_j / beta_0 with beta_0 = |B_P^-1 e_j|_B = sqrt(e_j^T B_P^-1 e_j).
+    w.work = Eigen::VectorXd::Unit(p, 0);
+    solve_mass(w, w.work);
+    const double initial_norm = std::sqrt(w.work[0]);
+    w.basis.col(0) = w.work / initial_norm;
+    w.mass_times_basis.col(0) = Eigen::VectorXd::Unit(p, 0) / initial_norm;
+
+    Eigen::Index k = 0;  // vectors in the basis
+    Eigen::Index next_check = (std::min)(Eigen::Index(first_check()), p);
+    Eigen::VectorXd stiffness_times_v(p);
     for(;;)
     {
-      // Lanczos step on q_k (0-based index k): residual = S q_k - alpha q_k - beta q_k-1,
-      // then reorthogonalised against the whole basis.
-      const double* q = &w.basis[k * p];
-      multiply(w, w.stiffness, q, residual.data());
-      double alpha = 0;
-      for(std::size_t a = 0; a < p; ++a)
-        alpha += q[a] * residual[a];
+      // w = B^-1 L v_k - alpha v_k - beta v_k-1, and B w alongside (no extra product).
+      stiffness_times_v.noalias() = w.stiffness * w.basis.col(k);
+      const double alpha = w.basis.col(k).dot(stiffness_times_v);
       w.alpha.push_back(alpha);
-      multiply(w, w.mass, q, &w.mass_times_basis[k * p]);
-      ++k;
-      // Classical Gram-Schmidt against the whole basis (which also removes alpha q_k
-      // and beta q_k-1), repeated when it cancelled much of the vector (Kahan-Parlett:
-      // twice is enough).
-      Eigen::Map<Eigen::VectorXd> r(residual.data(), Eigen::Index(p));
-      Eigen::Map<const Eigen::MatrixXd> Q(w.basis.data(), Eigen::Index(p), Eigen::Index(k));
-      const double before = r.norm();
-      r -= Q * (Q.transpose() * r).eval();
-      double beta = r.norm();
-      if(beta < 0.7 * before)
+      w.work = stiffness_times_v;
+      solve_mass(w, w.work);
+      w.work -= alpha * w.basis.col(k);
+      Eigen::VectorXd mass_times_work = stiffness_times_v - alpha * w.mass_times_basis.col(k);
+      if(k > 0)
       {
-        r -= Q * (Q.transpose() * r).eval();
-        beta = r.norm();
+        w.work -= w.beta.back() * w.basis.col(k - 1);
+        mass_times_work -= w.beta.back() * w.mass_times_basis.col(k - 1);
       }
-      const bool exhausted = k == p || !(beta > 1e-12 * (std::abs(alpha) + (w.beta.empty() ? 0. : w.beta.back())));
-
+      ++k;
+      const double beta = std::sqrt((std::max)(0., w.work.dot(mass_times_work)));
+      const bool exhausted = k == p || !(beta > 1e-12 * std::abs(alpha));
       if(k == next_check || exhausted)
       {
-        const double change = solve_projected(w, k, coefficients);
-#ifdef LHK_DEBUG
-        std::cerr << "  k " << k << " change " << change << " p " << p << "\n";
-#endif
-        if(change <= tolerance_ || exhausted)
+        const double newest = solve_projected(w, k, initial_norm);
+        if(newest <= tolerance_ || exhausted)
           break;
-        next_check = (std::min)(k + check_step, p);
+        next_check = (std::min)(k + Eigen::Index(check_step), p);
       }
       if(k == capacity)
       {
         capacity = (std::min)(p, 2 * capacity);
-        w.basis.resize(p * capacity, 0.);
-        w.mass_times_basis.resize(p * capacity, 0.);
+        w.basis.conservativeResize(p, capacity);
+        w.mass_times_basis.conservativeResize(p, capacity);
       }
       w.beta.push_back(beta);
-      Eigen::Map<Eigen::VectorXd>(&w.basis[k * p], Eigen::Index(p)) = r / beta;
+      w.basis.col(k) = w.work / beta;
+      w.mass_times_basis.col(k) = mass_times_work / beta;
     }
-    w.krylov_dimension = k;
+    w.krylov_dimension = std::size_t(k);
 
-    // h_P = M^-1/2 Q c, and the heat it carries, 1^T B_P h_P.
-    w.values.assign(p, 0.);
-    Eigen::Map<Eigen::VectorXd> h(w.values.data(), Eigen::Index(p));
-    h = Eigen::Map<const Eigen::MatrixXd>(w.basis.data(), Eigen::Index(p), Eigen::Index(k)) * coefficients;
-    double heat = 0;
-    for(std::size_t a = 0; a < p; ++a)
-    {
-      w.values[a] *= w.inverse_root_mass[a];
-      heat += w.patch_mass_row_sum[a] * w.values[a];
-    }
+    // h_P = V c, and the heat it carries, 1^T B_P h_P = (B_P V c) summed.
+    w.values.resize(std::size_t(p));
+    Eigen::Map<Eigen::VectorXd> h(w.values.data(), p);
+    h.noalias() = w.basis.leftCols(k) * w.coefficients;
+    const double heat = (w.mass_times_basis.leftCols(k) * w.coefficients).sum();
     w.heat_deficit = std::abs(1. - heat);
   }
 
-  // The coefficients c of h_P = M^-1/2 Q c in the basis of the first k vectors, and
-  // the relative size of the newest ones (the convergence estimate).
-  double solve_projected(Workspace& w, std::size_t k, Eigen::VectorXd& c) const
+  // The coefficients c = beta_0 exp(-tT) e_1 in the basis of the first k vectors, and
+  // the relative size of the newest two (the convergence estimate).
+  double solve_projected(Workspace& w, Eigen::Index k, double initial_norm) const
   {
-    const std::size_t p = w.patch.size();
-    const Eigen::Index K = Eigen::Index(k);
-    Eigen::MatrixXd T = Eigen::MatrixXd::Zero(K, K);
-    for(Eigen::Index a = 0; a < K; ++a)
-    {
-      T(a, a) = w.alpha[std::size_t(a)];
-      if(a + 1 < K)
-        T(a, a + 1) = T(a + 1, a) = w.beta[std::size_t(a)];
-    }
-    const double source_scale = w.inverse_root_mass[0];  // V^T e_j = M_jj^-1/2 e_1
-    if(mass_kind_ == Local_kernel_mass::lumped)
-    {
-      const Eigen::SelfAdjointEigenSolver<Eigen::MatrixXd> eigen(T);
-      const Eigen::VectorXd decay = (-time_ * eigen.eigenvalues().array()).exp();
-      c = eigen.eigenvectors() * (decay.asDiagonal() * eigen.eigenvectors().row(0).transpose()) * source_scale;
-    }
-    else
-    {
-      const Eigen::Map<const Eigen::MatrixXd> Q(w.basis.data(), Eigen::Index(p), K);
-      const Eigen::Map<const Eigen::MatrixXd> BQ(w.mass_times_basis.data(), Eigen::Index(p), K);
-      Eigen::MatrixXd projected_mass = Q.transpose() * BQ;
-      projected_mass = 0.5 * (projected_mass + projected_mass.transpose()).eval();
-      const Eigen::LLT<Eigen::MatrixXd> cholesky(projected_mass);
-      const auto C = cholesky.matrixL();
-      // S_V = C^-1 T C^-T; exp(-t B_V^-1 T) B_V^-1 = C^-T exp(-t S_V) C^-1.
-      const Eigen::MatrixXd X = C.solve(T);
-      Eigen::MatrixXd S = C.solve(X.transpose());
-      S = 0.5 * (S + S.transpose()).eval();
-      const Eigen::SelfAdjointEigenSolver<Eigen::MatrixXd> eigen(S);
-      const Eigen::VectorXd decay = (-time_ * eigen.eigenvalues().array()).exp();
-      Eigen::VectorXd x = Eigen::VectorXd::Unit(K, 0);
-      x = C.solve(x);
-      const Eigen::VectorXd y = eigen.eigenvectors() * (decay.asDiagonal() * (eigen.eigenvectors().transpose() * x));
-      c = cholesky.matrixU().solve(y) * source_scale;
-    }
-    const double newest = K >= 2 ? std::hypot(c[K - 1], c[K - 2]) : std::abs(c[K - 1]);
-    return newest / c.norm();
+    Eigen::VectorXd diagonal(k), subdiagonal((std::max)(k - 1, Eigen::Index(1)));
+    for(Eigen::Index a = 0; a < k; ++a)
+      diagonal[a] = w.alpha[std::size_t(a)];
+    for(Eigen::Index a = 0; a + 1 < k; ++a)
+      subdiagonal[a] = w.beta[std::size_t(a)];
+    Eigen::SelfAdjointEigenSolver<Eigen::MatrixXd> eigen;
+    eigen.computeFromTridiagonal(diagonal, subdiagonal.head(k - 1), Eigen::ComputeEigenvectors);
+    const Eigen::VectorXd decay = (-time_ * eigen.eigenvalues().array()).exp();
+    w.coefficients =
+        eigen.eigenvectors() * (decay.asDiagonal() * eigen.eigenvectors().row(0).transpose()) * initial_norm;
+    const double newest = k >= 2 ? std::hypot(w.coefficients[k - 1], w.coefficients[k - 2])
+                                 : std::abs(w.coefficients[k - 1]);
+    return newest / w.coefficients.norm();
   }
 
   const Indexed_mesh& mesh_;

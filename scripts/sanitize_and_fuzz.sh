@@ -1,0 +1,50 @@
+#!/usr/bin/env bash
+# The robustness stage of scripts/test.sh (run it after scripts/setup.sh):
+#  1. the test suite built with AddressSanitizer + UndefinedBehaviorSanitizer (clang,
+#     -O1) in build/sanitize/: tests, tool and fuzz target only, no examples or
+#     benchmarks; CTest runs every suite there (not the doc and install checks),
+#     including fuzz_regressions, which replays the seed corpus and every input in
+#     test/Heat_diffusion/fuzz/regressions/;
+#  2. libFuzzer on fuzz_off_pipeline for HEAT_DIFFUSION_FUZZ_SECONDS (default 60) from
+#     the seed corpus test/Heat_diffusion/fuzz/corpus/. A crashing, hanging or
+#     leaking input fails the run and is kept in test/Heat_diffusion/fuzz/regressions/,
+#     where CTest replays it from then on: commit it with the fix.
+set -euo pipefail
+cd "$(dirname "$0")/.."
+build=build/sanitize
+seconds=${HEAT_DIFFUSION_FUZZ_SECONDS:-60}
+fuzz_dir=test/Heat_diffusion/fuzz
+stage_start=$SECONDS
+elapsed() { echo "$((SECONDS - stage_start)) s"; stage_start=$SECONDS; }
+
+echo "== building the sanitizer configuration in $build/"
+cmake -S . -B "$build" -DCMAKE_BUILD_TYPE=Debug -DCGAL_DO_NOT_WARN_ABOUT_CMAKE_BUILD_TYPE=TRUE \
+      -DCMAKE_C_COMPILER=clang -DCMAKE_CXX_COMPILER=clang++ \
+      -DCGAL_HEAT_DIFFUSION_SANITIZE=ON -DCGAL_HEAT_DIFFUSION_BUILD_FUZZERS=ON \
+      -DCGAL_HEAT_DIFFUSION_BUILD_EXAMPLES=OFF -DCGAL_HEAT_DIFFUSION_BUILD_BENCHMARKS=OFF \
+      -DCGAL_HEAT_DIFFUSION_DATA_DIR="$PWD/build/data/meshes" >/dev/null
+cmake --build "$build" -j "$(nproc)"
+echo "== sanitizer build: $(elapsed)"
+
+export ASAN_OPTIONS=${ASAN_OPTIONS:-detect_leaks=1:abort_on_error=1}
+export UBSAN_OPTIONS=${UBSAN_OPTIONS:-print_stacktrace=1:halt_on_error=1}
+echo "== test suite under ASan + UBSan"
+(cd "$build" && ctest --output-on-failure -j "$(nproc)" -E '^(doc_heat_diffusion|install_heat_diffusion)$')
+echo "== sanitized test suite: $(elapsed)"
+
+echo "== fuzzing fuzz_off_pipeline for $seconds s"
+work_corpus="$build/fuzz_corpus"  # new inputs land here; the seeds stay as they are
+mkdir -p "$work_corpus" "$fuzz_dir/regressions"
+log="$build/fuzz.log"
+status=0
+"$build/bin/fuzz_off_pipeline" -max_total_time="$seconds" -max_len=2048 -timeout=10 -rss_limit_mb=2048 \
+    -print_final_stats=1 -artifact_prefix="$fuzz_dir/regressions/" \
+    "$work_corpus" "$fuzz_dir/corpus" >"$log" 2>&1 || status=$?
+grep -E '^#[0-9]+ +(INITED|DONE)|^Done|stat::number_of_executed_units|stat::peak_rss' "$log" || true
+if [ "$status" -ne 0 ]; then
+  tail -n 60 "$log"
+  echo "fuzz_off_pipeline failed (exit $status); the input is kept in $fuzz_dir/regressions/:"
+  grep -E 'Test unit written to' "$log" || true
+  exit 1
+fi
+echo "== fuzzing: $(elapsed)"
