@@ -131,6 +131,36 @@ cp "$data/elephant.off" mine2.off
 expect 1 'refusing to overwrite the input' -- "$tool" enhance mine2.off -o mine2.off
 cmp -s mine2.off "$data/elephant.off" && pass || fail "enhance modified its input"
 expect 0 'Usage: heat_diffusion enhance' -- "$tool" enhance --help
+# denoise: OFF and PLY outputs with the input's vertex count, JSON with timings, errors
+"$tool" denoise "$data/elephant.off" -o denoised.off --json --quiet > denoise.json &&
+  python3 -c '
+import json; d = json.load(open("denoise.json"))
+assert d["vertices"] == 2775 and d["iterations"] == 2, d
+assert 0 < d["displacement_in_mean_edge_lengths"]["mean"] < 1, d
+assert all(v >= 0 for v in d["timings_ms"].values()) and "denoise" in d["timings_ms"], d' &&
+  [ "$(sed -n 2p denoised.off | cut -d" " -f1)" = 2775 ] && pass || fail "denoise OFF output or JSON"
+expect 0 'written to denoised.ply' -- "$tool" denoise "$data/elephant.off" -o denoised.ply --iterations 1 -m 60
+head -c 300 denoised.ply | grep -aq "element vertex 2775" && pass || fail "denoise PLY output"
+expect 0 'written to elephant_denoised.off' -- "$tool" denoise "$data/elephant.off" --iterations 0
+python3 -c '
+import sys
+def vertices(path):
+    tokens = [t for line in open(path) for t in line.split("#")[0].split()]
+    n = int(tokens[1])
+    return [float(x) for x in tokens[4:4 + 3 * n]]
+a, b = vertices("elephant_denoised.off"), vertices(sys.argv[1])
+assert len(a) == len(b) == 3 * 2775 and max(abs(x - y) for x, y in zip(a, b)) < 1e-12' "$data/elephant.off" &&
+  pass || fail "denoise with 0 iterations changed the vertices"
+expect 2 '--sigma must be a number > 0' -- "$tool" denoise "$data/elephant.off" --sigma 0
+expect 2 '--anchor-weight must be a number > 0' -- "$tool" denoise "$data/elephant.off" --anchor-weight -1
+expect 2 'take whole numbers' -- "$tool" denoise "$data/elephant.off" --iterations 1.5
+expect 2 'must name an .off or .ply file' -- "$tool" denoise "$data/elephant.off" -o out.obj
+expect 2 'exactly one NOISY' -- "$tool" denoise
+expect 1 'no such file' -- "$tool" denoise missing.off -o out.off
+cp "$data/elephant.off" mine3.off
+expect 1 'refusing to overwrite the input' -- "$tool" denoise mine3.off -o mine3.off
+cmp -s mine3.off "$data/elephant.off" && pass || fail "denoise modified its input"
+expect 0 'Usage: heat_diffusion denoise' -- "$tool" denoise --help
 
 echo "test_cli: $passed passed, $failed failed"
 [ "$failed" -eq 0 ]

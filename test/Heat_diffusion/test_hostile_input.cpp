@@ -267,7 +267,8 @@ std::vector<Corpus_case> corpus()
       {"truncated.off", false, ""},
       {"header_only.off", false, ""},
       {"garbage.off", false, ""},
-      {"negative_index.off", false, ""},
+      // (negative_index.off is not read here: CGAL's reader converts -1 to std::size_t,
+      // undefined behaviour; the tool rejects the file before, see test_hostile_cli.sh)
       {"index_out_of_range.off", false, ""},
       {"fractional_index.off", false, ""},
       {"missing_normal.off", false, ""},

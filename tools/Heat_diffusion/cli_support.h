@@ -329,10 +329,10 @@ inline void check_off_stream(std::istream& is, std::uintmax_t size)
       fail(std::string("the ") + what + " " + text(x) + " is out of range (" + text(lowest) + " to " +
            text(std::floor(highest)) + " for a file of " + std::to_string(size) + " bytes)");
     }
-    return std::size_t(x);
+    return x;
   };
-  const std::size_t nv = read_count("vertex count", 0, byte_bound / 6);
-  const std::size_t nf = read_count("face count", 0, byte_bound / 2);
+  const std::size_t nv = std::size_t(read_count("vertex count", 0, byte_bound / 6));
+  const std::size_t nf = std::size_t(read_count("face count", 0, byte_bound / 2));
   read_count("edge count", -1e9, 1e9);
 
   // The entries of the next non-comment line, as CGAL's scanner reads them.
@@ -385,7 +385,7 @@ inline void check_off_stream(std::istream& is, std::uintmax_t size)
     for(std::size_t f = 0; f < nf; ++f)
     {
       const std::string element = "face " + std::to_string(f);
-      const std::size_t k = read_count((element + " size").c_str(), 0, byte_bound / 4);
+      const std::size_t k = std::size_t(read_count((element + " size").c_str(), 0, byte_bound / 4));
       for(std::size_t j = 0; j < k; ++j)
         read_count((element + " vertex index").c_str(), 0, double(nv) - 1);
     }

@@ -7,6 +7,7 @@
 // Each subcommand lives in command_<name>.h and defines run_<name>(argc, argv).
 #include "command_diffuse.h"
 #include "command_decompose.h"
+#include "command_denoise.h"
 #include "command_enhance.h"
 #include "command_features.h"
 #include "command_hks.h"
@@ -33,6 +34,7 @@ const char* const general_help =
     "  hks MESH       The heat kernel signature and its maxima (the paper's baseline)\n"
     "  decompose MESH Detail bands and residual of the NS (or a field), each band of sum 0\n"
     "  enhance MESH   Shape editing: reweighted NS detail bands, e.g. --weights 1,3,3\n"
+    "  denoise NOISY  Mesh denoising by diffusion of the NS (eq. 22-23), writes OFF or PLY\n"
     "\n"
     "MESH is any file CGAL::IO::read_polygon_mesh reads (OFF, OBJ, PLY, STL, VTP, TS, ...);\n"
     "polygon faces are triangulated. Exit status: 0 success, 1 bad input (the message names\n"
@@ -63,6 +65,8 @@ int main(int argc, char** argv)
       return run_decompose(argc, argv);
     if(command == "enhance")
       return run_enhance(argc, argv);
+    if(command == "denoise")
+      return run_denoise(argc, argv);
     throw Usage_error(command.empty() ? "missing COMMAND" : "unknown command '" + command + "'");
   }
   catch(const Usage_error& e)

@@ -7,7 +7,11 @@
 #define CGAL_HEAT_DIFFUSION_ANISOTROPIC_HEAT_DIFFUSION_H
 
 #include <CGAL/Heat_diffusion/Edge_weighted_heat_kernel.h>
+#include <CGAL/Heat_diffusion/heat_kernel_method.h>
+#include <CGAL/Heat_diffusion/internal/heat_operators.h>
+#include <CGAL/Heat_diffusion/internal/local_heat_kernel.h>
 #include <CGAL/Heat_diffusion/internal/parallel_for.h>
+#include <CGAL/Heat_diffusion/normal_controlled_coordinates.h>
 #include <CGAL/Heat_diffusion/parameters.h>
 
 #include <Eigen/Sparse>
@@ -16,6 +20,7 @@
 #include <cmath>
 #include <memory>
 #include <sstream>
+#include <stdexcept>
 #include <vector>
 
 namespace CGAL {
@@ -35,6 +40,13 @@ struct Heat_region_statistics
 /// \ingroup PkgHeatDiffusionDiffusion
 /// The diffusion operator \f$ A_t \f$ of the paper (eq. 15-19) built once, and
 /// \f$ F^k = A_t^k F^0 \f$ computed many times by sparse matrix-vector products.
+///
+/// <b>Kernel.</b> \f$ h_t = \exp(-t B^{-1} L) B^{-1} \f$ of the edge-weighted operator of
+/// `Edge_weighted_heat_kernel`, evaluated as the named parameter `kernel_method` says:
+/// `Heat_kernel_method::spectral` (the default, the paper's m eigenpairs) or
+/// `Heat_kernel_method::local` (each column on a patch around its source, with no
+/// eigen solve and no truncation: the NCC, \f$ L \f$ and \f$ B \f$ are all it computes; see
+/// the user manual for the accuracy and the cost of each).
 ///
 /// <b>Heat regions (eq. 15).</b> The region \f$ \Omega_j \f$ of a vertex \f$ v_j \f$ is grown
 /// breadth first from \f$ v_j \f$ over mesh edges, taking the vertices with
@@ -60,8 +72,9 @@ struct Heat_region_statistics
 /// counts capped regions.
 ///
 /// <b>Collapsed regions.</b> When the kernel of a vertex is below the threshold at all
-/// its neighbours (the truncated kernel can be that flat at small t), its region is the
-/// vertex alone and it never diffuses. `region_statistics()` counts such regions.
+/// its neighbours (the truncated kernel can be that flat at small t; with either kernel,
+/// the weights of a small `sigma` can isolate a vertex, such as a corner where sharp
+/// creases meet), its region is the vertex alone and it never diffuses. `region_statistics()` counts such regions.
 ///
 /// @tparam TriangleMesh a model of `FaceListGraph` and `HalfedgeListGraph`
 /// @tparam GeomTraits a model of `Kernel`
@@ -73,25 +86,87 @@ class Anisotropic_heat_diffusion
 public:
   typedef typename boost::graph_traits<TriangleMesh>::vertex_descriptor vertex_descriptor;
   typedef Edge_weighted_heat_kernel<TriangleMesh, GeomTraits> Heat_kernel;
+  /// The NCC the operators are built from.
+  typedef Normal_controlled_coordinates<TriangleMesh, GeomTraits> NCC;
   /// The sparse matrix type of \f$ A_t \f$.
   typedef Eigen::SparseMatrix<double> Sparse_matrix;
 
-  /// Builds the heat kernel of `tm` (see `Edge_weighted_heat_kernel` for its named
-  /// parameters) and \f$ A_t \f$ for the named parameter `time` (default 1).
+  /// Builds the heat kernel of `tm` and \f$ A_t \f$.
+  ///
+  /// \cgalNamedParamsBegin
+  ///   \cgalParamNBegin{time}
+  ///     \cgalParamDescription{the time t of one step (on the surface rescaled to area = number of vertices)}
+  ///     \cgalParamType{`double`, positive}
+  ///     \cgalParamDefault{`1`}
+  ///   \cgalParamNEnd
+  ///   \cgalParamNBegin{kernel_method}
+  ///     \cgalParamDescription{how the heat kernel is evaluated}
+  ///     \cgalParamType{`Heat_kernel_method`}
+  ///     \cgalParamDefault{`Heat_kernel_method::spectral`}
+  ///   \cgalParamNEnd
+  ///   \cgalParamNBegin{sigma, vertex_point_map, vertex_index_map, vertex_normal_map, vertex_normal_rule, geom_traits}
+  ///     \cgalParamDescription{as for `Edge_weighted_heat_kernel`, with either method}
+  ///   \cgalParamNEnd
+  ///   \cgalParamNBegin{number_of_eigenpairs, scale_invariant_kernel, progress_callback, ...}
+  ///     \cgalParamDescription{as for `Edge_weighted_heat_kernel`, for the spectral method; the
+  ///       local method ignores them, except `scale_invariant_kernel(true)`, which it rejects
+  ///       (eq. 14 needs the eigenvalues)}
+  ///   \cgalParamNEnd
+  /// \cgalNamedParamsEnd
+  ///
+  /// \throws std::invalid_argument on a mesh the package cannot process (see
+  ///   `Normal_controlled_coordinates`) or an invalid parameter.
+  /// \throws std::runtime_error if the eigen solve fails or is cancelled (spectral method).
+  ///
+  /// Complexity: that of `Edge_weighted_heat_kernel` plus the construction from a kernel
+  /// below (spectral); linear in the number of vertices for a fixed t (local: per
+  /// vertex, a sparse factorisation on a patch of O(t) vertices and O(sqrt(t)) Lanczos
+  /// steps; parallel with TBB).
   template <typename NamedParameters = parameters::Default_named_parameters>
   explicit Anisotropic_heat_diffusion(const TriangleMesh& tm, const NamedParameters& np = parameters::default_values())
-    : owned_kernel_(std::make_shared<Heat_kernel>(tm, np)), kernel_(*owned_kernel_)
+    : method_(parameters::choose_parameter(parameters::get_parameter(np, internal_np::kernel_method),
+                                           Heat_kernel_method::spectral))
   {
-    build(parameters::choose_parameter(parameters::get_parameter(np, internal_np::time), 1.));
+    using parameters::choose_parameter;
+    using parameters::get_parameter;
+    const double t = checked_time(choose_parameter(get_parameter(np, internal_np::time), 1.));
+    if(method_ == Heat_kernel_method::spectral)
+    {
+      owned_kernel_ = std::make_shared<Heat_kernel>(tm, np);
+      kernel_ = owned_kernel_.get();
+      ncc_ = &kernel_->normal_controlled_coordinates();
+      build_spectral(t);
+      return;
+    }
+    if(method_ != Heat_kernel_method::local)
+      internal::throw_invalid_input("Anisotropic_heat_diffusion: unknown kernel_method");
+    if(choose_parameter(get_parameter(np, internal_np::scale_invariant_kernel), false))
+      internal::throw_invalid_input("Anisotropic_heat_diffusion: the scale-invariant kernel (eq. 14) needs the "
+                                    "eigenvalues; use Heat_kernel_method::spectral");
+    const double sigma = choose_parameter(get_parameter(np, internal_np::sigma), 0.1);
+    if(!(sigma > 0) || std::isnan(sigma))
+      internal::throw_invalid_input("Anisotropic_heat_diffusion: sigma must be positive");
+    owned_ncc_ = std::make_shared<NCC>(tm, np);
+    ncc_ = owned_ncc_.get();
+    const internal::Indexed_mesh& mesh = ncc_->indexed_mesh();
+    if(mesh.number_of_vertices() == 0)
+      internal::throw_invalid_input("Anisotropic_heat_diffusion: the mesh is empty");
+    // L and B live only while A_t is built: A_t is all the diffusion needs.
+    const internal::Heat_operators operators = internal::assemble_heat_operators(mesh, ncc_->data(), sigma);
+    build_local(t, operators);
   }
 
-  /// Builds \f$ A_t \f$ from an existing kernel, which must outlive this object.
+  /// Builds \f$ A_t \f$ from an existing (spectral) kernel, which must outlive this object.
   ///
   /// \throws std::invalid_argument if `t` is not positive and finite.
   ///
   /// Complexity: linear in the number of vertices for a fixed t (one breadth-first
   /// search per vertex, over its region and the region's one-ring; parallel with TBB).
-  Anisotropic_heat_diffusion(const Heat_kernel& kernel, double t) : kernel_(kernel) { build(t); }
+  Anisotropic_heat_diffusion(const Heat_kernel& kernel, double t)
+    : kernel_(&kernel), ncc_(&kernel.normal_controlled_coordinates()), method_(Heat_kernel_method::spectral)
+  {
+    build_spectral(checked_time(t));
+  }
 
   /// The largest heat region, in vertices.
   static constexpr std::size_t maximum_region_size = 4096;
@@ -100,8 +175,23 @@ public:
   double time() const { return time_; }
   /// The threshold \f$ \tau(t) = 0.01/(1+t) \f$.
   double threshold() const { return 0.01 / (1. + time_); }
-  /// The heat kernel.
-  const Heat_kernel& heat_kernel() const { return kernel_; }
+  /// How the heat kernel was evaluated.
+  Heat_kernel_method kernel_method() const { return method_; }
+  /// The spectral heat kernel.
+  /// \throws std::logic_error if `kernel_method()` is `Heat_kernel_method::local`, which has none.
+  const Heat_kernel& heat_kernel() const
+  {
+    if(kernel_ == nullptr)
+      throw std::logic_error("CGAL::Heat_diffusion::Anisotropic_heat_diffusion: the local kernel method has no "
+                             "spectral heat kernel");
+    return *kernel_;
+  }
+  /// The NCC of the mesh (both methods).
+  const NCC& normal_controlled_coordinates() const { return *ncc_; }
+  /// The row and column of `v` in `operator_matrix()`.
+  std::size_t vertex_index(vertex_descriptor v) const { return ncc_->vertex_index(v); }
+  /// The number of vertices.
+  std::size_t number_of_vertices() const { return ncc_->indexed_mesh().number_of_vertices(); }
   /// \f$ A_t \f$, column-stochastic; rows and columns follow `Heat_kernel::vertex_index()`.
   const Sparse_matrix& operator_matrix() const { return operator_; }
   /// Sizes of the heat regions.
@@ -147,20 +237,20 @@ public:
   template <typename InputFieldMap, typename OutputFieldMap>
   void diffuse(InputFieldMap field_in, OutputFieldMap field_out, std::size_t number_of_steps) const
   {
-    const TriangleMesh& tm = kernel_.normal_controlled_coordinates().mesh();
-    Eigen::VectorXd field(Eigen::Index(kernel_.number_of_vertices()));
+    const TriangleMesh& tm = ncc_->mesh();
+    Eigen::VectorXd field(static_cast<Eigen::Index>(number_of_vertices()));
     for(vertex_descriptor v : vertices(tm))
-      field[Eigen::Index(kernel_.vertex_index(v))] = CGAL::to_double(get(field_in, v));
+      field[Eigen::Index(vertex_index(v))] = CGAL::to_double(get(field_in, v));
     const Eigen::VectorXd result = diffuse(field, number_of_steps);
     typedef typename boost::property_traits<OutputFieldMap>::value_type Value;
     for(vertex_descriptor v : vertices(tm))
-      put(field_out, v, Value(result[Eigen::Index(kernel_.vertex_index(v))]));
+      put(field_out, v, Value(result[Eigen::Index(vertex_index(v))]));
   }
 
 private:
   void check_field(const Eigen::VectorXd& field) const
   {
-    if(field.size() != Eigen::Index(kernel_.number_of_vertices()))
+    if(field.size() != Eigen::Index(number_of_vertices()))
       internal::throw_invalid_input("Anisotropic_heat_diffusion: the field has the wrong size");
     for(Eigen::Index i = 0; i < field.size(); ++i)
       if(!std::isfinite(field[i]))
@@ -182,38 +272,91 @@ private:
     });
   }
 
-  void build(double t)
+  static double checked_time(double t)
   {
     if(!(t > 0) || !std::isfinite(t))
       internal::throw_invalid_input("Anisotropic_heat_diffusion: time must be positive and finite");
-    time_ = t;
-    const internal::Indexed_mesh& mesh = kernel_.normal_controlled_coordinates().indexed_mesh();
-    const std::size_t n = mesh.number_of_vertices();
-    const Eigen::Index m = Eigen::Index(kernel_.number_of_eigenpairs());
+    return t;
+  }
 
-    // Psi = Phi exp(-rate t / 2), row-major, so that h_t(i, j) = (beta) Psi_i . Psi_j
-    // reads two contiguous rows.
-    Eigen::Matrix<double, Eigen::Dynamic, Eigen::Dynamic, Eigen::RowMajor> psi = kernel_.eigenvectors();
-    for(Eigen::Index k = 0; k < m; ++k)
-      psi.col(k) *= std::exp(-0.5 * kernel_.decay_rate(std::size_t(k)) * t);
-    const bool relative = kernel_.is_scale_invariant();
-    auto h = [&](std::size_t i, std::size_t j) {
+  // h_t(j, i) = (beta) Psi_i . Psi_j with Psi = Phi exp(-rate t / 2), row-major, so that
+  // an evaluation reads two contiguous rows.
+  struct Spectral_columns
+  {
+    struct Workspace {};
+    Eigen::Matrix<double, Eigen::Dynamic, Eigen::Dynamic, Eigen::RowMajor> psi;
+    const Heat_kernel* kernel;
+    bool relative;
+
+    Workspace make_workspace() const { return Workspace(); }
+    void prepare(std::size_t, Workspace&) const {}
+    double operator()(std::size_t j, std::size_t i, const Workspace&) const
+    {
       const double dot = psi.row(Eigen::Index(i)).dot(psi.row(Eigen::Index(j)));
-      return relative ? kernel_.beta(i, j) * dot : dot;
-    };
+      return relative ? kernel->beta(i, j) * dot : dot;
+    }
+  };
 
+  // h_t(j, i) = h_t(i, j) from the column of v_j, computed on its patch by prepare().
+  struct Local_columns
+  {
+    typedef internal::Local_heat_kernel::Workspace Workspace;
+    const internal::Local_heat_kernel& kernel;
+
+    Workspace make_workspace() const { return kernel.make_workspace(); }
+    void prepare(std::size_t j, Workspace& w) const { kernel.compute_column(j, w); }
+    double operator()(std::size_t, std::size_t i, const Workspace& w) const
+    {
+      return internal::Local_heat_kernel::value(w, i);
+    }
+  };
+
+  void build_spectral(double t)
+  {
+    time_ = t;
+    const Eigen::Index m = Eigen::Index(kernel_->number_of_eigenpairs());
+    Spectral_columns columns{kernel_->eigenvectors(), kernel_, kernel_->is_scale_invariant()};
+    for(Eigen::Index k = 0; k < m; ++k)
+      columns.psi.col(k) *= std::exp(-0.5 * kernel_->decay_rate(std::size_t(k)) * t);
+    std::vector<std::size_t> order(number_of_vertices());
+    for(std::size_t j = 0; j < order.size(); ++j)
+      order[j] = j;
+    build_from_columns(columns, columns.relative, order);
+  }
+
+  void build_local(double t, const internal::Heat_operators& operators)
+  {
+    time_ = t;
+    const internal::Local_heat_kernel kernel(ncc_->indexed_mesh(), operators.stiffness, operators.mass, t);
+    // Sources in breadth-first order: consecutive sources share most of their patches,
+    // which then stay in cache.
+    build_from_columns(Local_columns{kernel}, false, internal::breadth_first_order(ncc_->indexed_mesh()));
+  }
+
+  // Grows the heat region of every source j and fills column j of A_t. `columns`
+  // evaluates h_t(j, i) once prepare(j) has run; `order` is the order of the sources
+  // (results do not depend on it: each source writes its own column).
+  template <typename Columns>
+  void build_from_columns(const Columns& kernel, bool relative, const std::vector<std::size_t>& order)
+  {
+    const internal::Indexed_mesh& mesh = ncc_->indexed_mesh();
+    const std::size_t n = mesh.number_of_vertices();
     struct Scratch
     {
       std::vector<std::size_t> mark;  // generation stamps: no clearing between sources
       std::size_t generation = 0;
       std::vector<std::size_t> queue;
+      typename Columns::Workspace kernel_workspace;
     };
     std::vector<std::vector<std::pair<std::size_t, double> > > columns(n);
     internal::parallel_for_with_scratch(
-        n, [n] { return Scratch{std::vector<std::size_t>(n, 0), 0, {}}; },
-        [&](std::size_t j, Scratch& s) {
+        n, [&] { return Scratch{std::vector<std::size_t>(n, 0), 0, {}, kernel.make_workspace()}; },
+        [&](std::size_t position, Scratch& s) {
+          const std::size_t j = order[position];
+          kernel.prepare(j, s.kernel_workspace);
+          auto h = [&](std::size_t i) { return kernel(j, i, s.kernel_workspace); };
           ++s.generation;
-          const double peak = h(j, j);
+          const double peak = h(j);
           const double tau = relative ? threshold() * peak : threshold();
           auto& column = columns[j];
           column.clear();
@@ -229,7 +372,7 @@ private:
               if(s.mark[u] == s.generation)
                 continue;
               s.mark[u] = s.generation;
-              const double value = h(j, u);
+              const double value = h(u);
               if(value > tau && column.size() < maximum_region_size)
               {
                 column.emplace_back(u, value);
@@ -248,15 +391,19 @@ private:
             for(auto& entry : column)
               entry.second /= sum;
           std::sort(column.begin(), column.end());
+          column.shrink_to_fit();
         });
 
     statistics_ = Heat_region_statistics();
     statistics_.min_size = n;
-    std::vector<Eigen::Triplet<double> > entries;
     std::size_t total = 0;
     for(const auto& column : columns)
       total += column.size();
-    entries.reserve(total);
+    // A_t written in compressed columns directly (the columns are sorted), each column
+    // freed once copied: no triplets, which would double the peak memory on large meshes.
+    operator_.resize(Eigen::Index(n), Eigen::Index(n));
+    operator_.resizeNonZeros(Eigen::Index(total));
+    std::size_t position = 0;
     for(std::size_t j = 0; j < n; ++j)
     {
       const std::size_t size = columns[j].size();
@@ -264,19 +411,27 @@ private:
       statistics_.max_size = (std::max)(statistics_.max_size, size);
       statistics_.collapsed_regions += size == 1 ? 1 : 0;
       statistics_.capped_regions += size >= maximum_region_size ? 1 : 0;
+      operator_.outerIndexPtr()[j] = typename Sparse_matrix::StorageIndex(position);
       for(const auto& entry : columns[j])
-        entries.emplace_back(int(entry.first), int(j), entry.second);
+      {
+        operator_.innerIndexPtr()[position] = typename Sparse_matrix::StorageIndex(entry.first);
+        operator_.valuePtr()[position] = entry.second;
+        ++position;
+      }
+      std::vector<std::pair<std::size_t, double> >().swap(columns[j]);
     }
+    operator_.outerIndexPtr()[n] = typename Sparse_matrix::StorageIndex(position);
     statistics_.mean_size = double(total) / double(n);
-    operator_.resize(Eigen::Index(n), Eigen::Index(n));
-    operator_.setFromTriplets(entries.begin(), entries.end());
     row_major_ = operator_;
   }
 
   typedef Eigen::SparseMatrix<double, Eigen::RowMajor> Row_major;
 
-  std::shared_ptr<const Heat_kernel> owned_kernel_;
-  const Heat_kernel& kernel_;
+  std::shared_ptr<const Heat_kernel> owned_kernel_;  // spectral, built from a mesh
+  const Heat_kernel* kernel_ = nullptr;              // spectral
+  std::shared_ptr<const NCC> owned_ncc_;             // local
+  const NCC* ncc_ = nullptr;
+  Heat_kernel_method method_ = Heat_kernel_method::spectral;
   double time_ = 1.;
   Sparse_matrix operator_;
   Row_major row_major_;
@@ -299,6 +454,11 @@ private:
 ///     \cgalParamDescription{the time t of one step (on the surface rescaled to area = number of vertices)}
 ///     \cgalParamType{`double`, positive}
 ///     \cgalParamDefault{`1`}
+///   \cgalParamNEnd
+///   \cgalParamNBegin{kernel_method}
+///     \cgalParamDescription{how the heat kernel is evaluated (see `Anisotropic_heat_diffusion`)}
+///     \cgalParamType{`Heat_kernel_method`}
+///     \cgalParamDefault{`Heat_kernel_method::spectral`}
 ///   \cgalParamNEnd
 ///   \cgalParamNBegin{sigma, number_of_eigenpairs, scale_invariant_kernel, progress_callback, vertex_point_map, ...}
 ///     \cgalParamDescription{as for `Edge_weighted_heat_kernel`}

@@ -26,6 +26,7 @@ enum number_of_steps_t { number_of_steps };
 enum anchor_weight_t { anchor_weight };
 enum vertex_normal_rule_t { vertex_normal_rule };
 enum scale_invariant_kernel_t { scale_invariant_kernel };
+enum kernel_method_t { kernel_method };
 enum progress_callback_t { progress_callback };
 enum feature_threshold_t { feature_threshold };
 enum steps_per_level_t { steps_per_level };
@@ -71,6 +72,8 @@ CGAL_HEAT_DIFFUSION_NAMED_PARAMETER(vertex_normal_rule_t, vertex_normal_rule)
 
 /// `true` for the scale-invariant kernel of eq. 14 instead of eq. 13.
 CGAL_HEAT_DIFFUSION_NAMED_PARAMETER(scale_invariant_kernel_t, scale_invariant_kernel)
+/// How `Anisotropic_heat_diffusion` evaluates the heat kernel, a `Heat_kernel_method`.
+CGAL_HEAT_DIFFUSION_NAMED_PARAMETER(kernel_method_t, kernel_method)
 /// A callable `bool(double fraction_done)` called during long computations (the
 /// eigen solve); returning `false` cancels them with an exception.
 CGAL_HEAT_DIFFUSION_NAMED_PARAMETER(progress_callback_t, progress_callback)

@@ -1,0 +1,187 @@
+// Copyright (c) 2026 The CGAL Heat_diffusion developers.
+// SPDX-License-Identifier: LGPL-3.0-or-later
+//
+// The local heat kernel (Heat_kernel_method::local) against the spectral one.
+//
+// Table 1: on fandisk and armadillo, t = 1: the time to A_t from the mesh with each
+//          kernel (NCC, L, B, then the eigen solve and A_t, or the local columns and
+//          A_t), their ratio, and the heat regions.
+// Table 2: scaling in n: armadillo Loop-subdivided (CGAL::Subdivision_method_3) at run
+//          time to about 100k, 400k and 1.6M vertices; end to end from the mesh to the
+//          diffused Normal Signature at k = 10 with the local kernel (NCC, operators,
+//          A_t, diffusion), and the peak memory (getrusage's ru_maxrss). Each size runs
+//          in its own process, so that each peak is its own.
+//
+// Usage: benchmark_local_kernel [DATA_DIR] [--levels L] [--first-level F] [--no-table-1]
+//                               [--time T] [--sigma S]
+//   L (default 3): Loop subdivision levels of table 2 (3 gives 1.6M vertices: minutes);
+//   F (default 0): the first level of table 2.
+// Wall-clock times of single runs: the eigen solve and the large meshes take seconds
+// to minutes, and the machine may be shared, so compare within a run.
+
+#include <CGAL/Exact_predicates_inexact_constructions_kernel.h>
+#include <CGAL/Heat_diffusion/Anisotropic_heat_diffusion.h>
+#include <CGAL/Heat_diffusion/Edge_weighted_heat_kernel.h>
+#include <CGAL/Polygon_mesh_processing/IO/polygon_mesh_io.h>
+#include <CGAL/Surface_mesh.h>
+#include <CGAL/subdivision_method_3.h>
+
+#include <sys/resource.h>
+#include <sys/wait.h>
+#include <unistd.h>
+
+#include <chrono>
+#include <cstdio>
+#include <cstdlib>
+#include <exception>
+#include <string>
+#include <thread>
+#include <vector>
+
+typedef CGAL::Exact_predicates_inexact_constructions_kernel K;
+typedef CGAL::Surface_mesh<K::Point_3> Mesh;
+namespace HD = CGAL::Heat_diffusion;
+typedef HD::Edge_weighted_heat_kernel<Mesh> Heat_kernel;
+typedef HD::Anisotropic_heat_diffusion<Mesh> Diffusion;
+
+volatile double benchmark_sink = 0;
+
+double seconds_since(std::chrono::steady_clock::time_point start)
+{
+  return std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
+}
+
+double peak_memory_gib()
+{
+  rusage usage;
+  getrusage(RUSAGE_SELF, &usage);
+  return double(usage.ru_maxrss) / (1024. * 1024.);  // ru_maxrss is in KiB on Linux
+}
+
+Mesh load(const std::string& path)
+{
+  Mesh mesh;
+  if(!CGAL::IO::read_polygon_mesh(path, mesh) || num_faces(mesh) == 0)
+  {
+    std::fprintf(stderr, "cannot read %s\n", path.c_str());
+    std::exit(EXIT_FAILURE);
+  }
+  return mesh;
+}
+
+Eigen::VectorXd normal_signature(const Diffusion& diffusion, const Mesh& mesh)
+{
+  Eigen::VectorXd f(static_cast<Eigen::Index>(mesh.number_of_vertices()));
+  for(auto v : mesh.vertices())
+    f[Eigen::Index(diffusion.vertex_index(v))] = diffusion.normal_controlled_coordinates().normal_signature(v);
+  return f;
+}
+
+void compare_kernels(const std::string& data, double t, double sigma)
+{
+  std::printf("\nTable 1: time to A_t from the mesh, t = %g, sigma = %g, m = 150 (%u threads)\n", t, sigma,
+              std::thread::hardware_concurrency());
+  std::printf("| mesh | n | spectral: NCC + L, B + eigen solve | + A_t | total s | local: NCC + L, B + A_t s |"
+              " spectral / local | regions spectral min/mean/max (collapsed) | local |\n|---|---|---|---|---|---|---|---|---|\n");
+  for(const char* name : {"fandisk.off", "armadillo.off"})
+  {
+    const Mesh mesh = load(data + "/" + name);
+    const auto sigma_parameter = HD::parameters::sigma(sigma);
+    auto start = std::chrono::steady_clock::now();
+    const Heat_kernel kernel(mesh, HD::parameters::combine(sigma_parameter, HD::parameters::number_of_eigenpairs(150)));
+    const double eigen_seconds = seconds_since(start);
+    start = std::chrono::steady_clock::now();
+    const Diffusion spectral(kernel, t);
+    const double operator_seconds = seconds_since(start);
+    start = std::chrono::steady_clock::now();
+    const Diffusion local(mesh, HD::parameters::combine(sigma_parameter, HD::parameters::time(t),
+                                                        HD::parameters::kernel_method(HD::Heat_kernel_method::local)));
+    const double local_seconds = seconds_since(start);
+    benchmark_sink = spectral.operator_matrix().sum() + local.operator_matrix().sum();
+    const auto& a = spectral.region_statistics();
+    const auto& b = local.region_statistics();
+    std::printf("| %s | %zu | %.2f | %.3f | %.2f | %.2f | %.2f | %zu / %.1f / %zu (%zu) | %zu / %.1f / %zu (%zu) |\n", name,
+                std::size_t(mesh.number_of_vertices()), eigen_seconds, operator_seconds,
+                eigen_seconds + operator_seconds, local_seconds, (eigen_seconds + operator_seconds) / local_seconds,
+                a.min_size, a.mean_size, a.max_size, a.collapsed_regions, b.min_size, b.mean_size, b.max_size,
+                b.collapsed_regions);
+    std::fflush(stdout);
+  }
+}
+
+// One row of table 2, in the calling process (run it in a child for its own peak).
+void end_to_end(const Mesh& base, int levels, double t, double sigma)
+{
+  Mesh mesh = base;
+  if(levels > 0)
+    CGAL::Subdivision_method_3::Loop_subdivision(mesh, CGAL::parameters::number_of_iterations(levels));
+  const double before = peak_memory_gib();
+  const auto start = std::chrono::steady_clock::now();
+  const Diffusion diffusion(mesh, HD::parameters::combine(HD::parameters::sigma(sigma), HD::parameters::time(t),
+                                                          HD::parameters::kernel_method(HD::Heat_kernel_method::local)));
+  const double build_seconds = seconds_since(start);
+  const Eigen::VectorXd f0 = normal_signature(diffusion, mesh);
+  const Eigen::VectorXd f10 = diffusion.diffuse(f0, 10);
+  const double total_seconds = seconds_since(start);
+  benchmark_sink = f10.sum();
+  const auto& r = diffusion.region_statistics();
+  const double n = double(mesh.number_of_vertices());
+  std::printf("| %d | %zu | %.1f | %.1f | %.2f | %.2f | %.2f | %zu / %.1f / %zu |\n", levels,
+              std::size_t(mesh.number_of_vertices()), build_seconds, total_seconds, 1e6 * total_seconds / n, before,
+              peak_memory_gib(), r.min_size, r.mean_size, r.max_size);
+  std::fflush(stdout);
+}
+
+int main(int argc, char** argv)
+{
+  std::string data = CGAL_HEAT_DIFFUSION_DATA_DIR;
+  int levels = 3, first_level = 0;
+  bool table_1 = true;
+  double t = 1., sigma = 0.1;
+  for(int i = 1; i < argc; ++i)
+  {
+    const std::string arg = argv[i];
+    if(arg == "--levels" && i + 1 < argc)
+      levels = std::atoi(argv[++i]);
+    else if(arg == "--first-level" && i + 1 < argc)
+      first_level = std::atoi(argv[++i]);
+    else if(arg == "--no-table-1")
+      table_1 = false;
+    else if(arg == "--time" && i + 1 < argc)
+      t = std::atof(argv[++i]);
+    else if(arg == "--sigma" && i + 1 < argc)
+      sigma = std::atof(argv[++i]);
+    else
+      data = arg;
+  }
+  try
+  {
+    if(table_1)
+      compare_kernels(data, t, sigma);
+    const Mesh armadillo = load(data + "/armadillo.off");
+    std::printf("\nTable 2: armadillo, Loop-subdivided, local kernel, end to end to F^10 (t = %g, sigma = %g)\n", t,
+                sigma);
+    std::printf("| levels | n | NCC + L, B + A_t s | + diffusion (total) s | total us / vertex |"
+                " memory before GiB | peak GiB | regions min/mean/max |\n|---|---|---|---|---|---|---|---|\n");
+    std::fflush(stdout);
+    for(int level = first_level; level <= levels; ++level)
+    {
+      const pid_t child = fork();
+      if(child == 0)
+      {
+        end_to_end(armadillo, level, t, sigma);
+        std::_Exit(EXIT_SUCCESS);
+      }
+      int status = 0;
+      waitpid(child, &status, 0);
+      if(!WIFEXITED(status) || WEXITSTATUS(status) != 0)
+        std::printf("| %d | (the run failed, status %d) |\n", level, status);
+    }
+  }
+  catch(const std::exception& e)
+  {
+    std::fprintf(stderr, "benchmark_local_kernel: %s\n", e.what());
+    return EXIT_FAILURE;
+  }
+  return EXIT_SUCCESS;
+}
