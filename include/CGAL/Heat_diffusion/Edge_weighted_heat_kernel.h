@@ -192,6 +192,11 @@ public:
       timings_.rayleigh_ritz = lap();
     }
     number_of_components_ = count_components(mesh);
+    // L is positive semi-definite: the solver's tiny negative values are rounding
+    // noise of the zero eigenvalues. Clamping them keeps every decay rate >= 0, so
+    // exp(-rate t) never overflows (found by fuzzing: a mesh whose eigenvalues were
+    // all noise gave eq. 14 rates of -772 and an infinite kernel).
+    eigenvalues_ = eigenvalues_.cwiseMax(0.);
 
     // lambda_* of eq. 14: the first eigenvalue clearly above the zero eigenvalues,
     // which the solver returns as tiny values of either sign: one per connected
