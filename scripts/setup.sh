@@ -6,7 +6,7 @@ set -euo pipefail
 cd "$(dirname "$0")/.."
 
 packages=(g++ cmake make python3 libcgal-dev libcgal-demo libeigen3-dev libboost-dev libspectra-dev
-          libsuitesparse-dev libtbb-dev clang libclang-rt-14-dev
+          libsuitesparse-dev libtbb-dev clang libclang-rt-14-dev ninja-build
           doxygen python3-matplotlib python3-numpy)  # the reference manual; scripts/render.py
 missing=()
 for p in "${packages[@]}"; do
