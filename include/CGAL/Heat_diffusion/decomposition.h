@@ -135,20 +135,19 @@ void decompose_field(const Anisotropic_heat_diffusion<TriangleMesh, GeomTraits>&
   const std::size_t steps_per_level = internal::checked_steps_per_level(
       double(parameters::choose_parameter(parameters::get_parameter(np, internal_np::steps_per_level), 5)),
       "decompose_field");
-  const auto& kernel = diffusion.heat_kernel();
-  const TriangleMesh& tm = kernel.normal_controlled_coordinates().mesh();
-  Eigen::VectorXd f0(Eigen::Index(kernel.number_of_vertices()));
+  const TriangleMesh& tm = diffusion.normal_controlled_coordinates().mesh();
+  Eigen::VectorXd f0(Eigen::Index(diffusion.number_of_vertices()));
   for(vertex_descriptor v : vertices(tm))
   {
     const double value = CGAL::to_double(get(field, v));
     if(!std::isfinite(value))
     {
       std::ostringstream os;
-      os << "decompose_field: the field value at vertex " << kernel.vertex_index(v) << " is " << value
+      os << "decompose_field: the field value at vertex " << diffusion.vertex_index(v) << " is " << value
          << ", not a finite number";
       internal::throw_invalid_input(os.str());
     }
-    f0[Eigen::Index(kernel.vertex_index(v))] = value;
+    f0[Eigen::Index(diffusion.vertex_index(v))] = value;
   }
 
   const std::size_t levels = std::size_t(std::distance(std::begin(detail_maps), std::end(detail_maps)));
@@ -158,12 +157,12 @@ void decompose_field(const Anisotropic_heat_diffusion<TriangleMesh, GeomTraits>&
   {
     typedef typename boost::property_traits<decltype(detail_map)>::value_type Value;
     for(vertex_descriptor v : vertices(tm))
-      put(detail_map, v, Value(bands[j][Eigen::Index(kernel.vertex_index(v))]));
+      put(detail_map, v, Value(bands[j][Eigen::Index(diffusion.vertex_index(v))]));
     ++j;
   }
   typedef typename boost::property_traits<VertexResidualMap>::value_type Residual_value;
   for(vertex_descriptor v : vertices(tm))
-    put(residual, v, Residual_value(bands.back()[Eigen::Index(kernel.vertex_index(v))]));
+    put(residual, v, Residual_value(bands.back()[Eigen::Index(diffusion.vertex_index(v))]));
 }
 
 /// \ingroup PkgHeatDiffusionApplications
@@ -305,14 +304,13 @@ void filter_shape(TriangleMesh& tm, const WeightRange& weights,
   {
     // The diffusion refers to the current shape: it must be gone before the shape moves.
     const Anisotropic_heat_diffusion<TriangleMesh, GeomTraits> diffusion(tm, np);
-    const auto& kernel = diffusion.heat_kernel();
-    const auto& ncc = kernel.normal_controlled_coordinates();
-    Eigen::VectorXd s(Eigen::Index(kernel.number_of_vertices()));
+      const auto& ncc = diffusion.normal_controlled_coordinates();
+    Eigen::VectorXd s(Eigen::Index(diffusion.number_of_vertices()));
     for(vertex_descriptor v : vertices(tm))
-      s[Eigen::Index(kernel.vertex_index(v))] = ncc.normal_signature(v);
+      s[Eigen::Index(diffusion.vertex_index(v))] = ncc.normal_signature(v);
     const Eigen::VectorXd edited = internal::synthesize(internal::decompose(diffusion, s, w.size(), steps_per_level), w);
     for(vertex_descriptor v : vertices(tm))
-      put(signature, v, edited[Eigen::Index(kernel.vertex_index(v))]);
+      put(signature, v, edited[Eigen::Index(diffusion.vertex_index(v))]);
   }
   reconstruct_from_normal_signature(tm, signature, np);
 }

@@ -188,21 +188,20 @@ detect_multiscale_features(const Anisotropic_heat_diffusion<TriangleMesh, GeomTr
   const double c = internal::checked_feature_threshold(
       parameters::choose_parameter(parameters::get_parameter(np, internal_np::feature_threshold), 0.8), function);
 
-  const auto& kernel = diffusion.heat_kernel();
-  const TriangleMesh& tm = kernel.normal_controlled_coordinates().mesh();
-  const std::size_t n = kernel.number_of_vertices();
+  const TriangleMesh& tm = diffusion.normal_controlled_coordinates().mesh();
+  const std::size_t n = diffusion.number_of_vertices();
   std::vector<vertex_descriptor> vertex_of_index(n);
   Eigen::VectorXd f0(static_cast<Eigen::Index>(n));
   for(vertex_descriptor v : vertices(tm))
   {
-    const std::size_t i = kernel.vertex_index(v);
+    const std::size_t i = diffusion.vertex_index(v);
     vertex_of_index[i] = v;
     f0[Eigen::Index(i)] = CGAL::to_double(get(field, v));
   }
   internal::check_field_is_finite(f0, function);
 
   const internal::Vertex_adjacency adjacency =
-      internal::make_vertex_adjacency(kernel.normal_controlled_coordinates().indexed_mesh());
+      internal::make_vertex_adjacency(diffusion.normal_controlled_coordinates().indexed_mesh());
   const std::vector<Eigen::VectorXd> fields = diffusion.diffuse(f0, steps);
   std::vector<Features_at_scale<vertex_descriptor> > result(steps.size());
   std::vector<std::size_t> convex, concave;
