@@ -74,7 +74,7 @@ expect 1 'short.txt: has 2 values, the mesh has 2775 vertices' -- "$tool" diffus
 expect 2 '--sigma must be a number > 0' -- "$tool" diffuse "$data/elephant.off" --sigma 0
 expect 2 '--time must be a number > 0' -- "$tool" diffuse "$data/elephant.off" --time -1
 expect 2 '-k takes a comma-separated list' -- "$tool" diffuse "$data/elephant.off" -k 1,-2
-expect 2 '-m must be a number >= 1' -- "$tool" diffuse "$data/elephant.off" -m 0
+expect 2 '-m must be a whole number from 1 to 1000000' -- "$tool" diffuse "$data/elephant.off" -m 0
 expect 0 'Usage: heat_diffusion diffuse' -- "$tool" diffuse --help
 cp field.txt ef_k0.ply
 expect 1 'refusing to overwrite the input' -- "$tool" diffuse "$data/elephant.off" --field ef_k0.ply -o ef -k 0
@@ -112,8 +112,8 @@ assert set(b) == {"1", "2", "3", "4"}, b
 assert all(b[j]["relative_sum"] <= 1e-12 for j in b), b
 assert abs(d["residual_heat"] - d["total_heat"]) <= 1e-12 * abs(d["total_heat"]) * 100, d'; then pass; else fail "decompose JSON"; fi
 for f in dec_band1 dec_band2 dec_band3 dec_band4 dec_residual; do [ -s $f.ply ] && pass || fail "$f.ply missing"; done
-expect 2 '--levels must be an integer' -- "$tool" decompose "$data/elephant.off" --levels 2.5
-expect 2 '--steps-per-level must be a number >= 1' -- "$tool" decompose "$data/elephant.off" --steps-per-level 0
+expect 2 '--levels must be a whole number' -- "$tool" decompose "$data/elephant.off" --levels 2.5
+expect 2 '--steps-per-level must be a whole number' -- "$tool" decompose "$data/elephant.off" --steps-per-level 0
 expect 0 'Usage: heat_diffusion decompose' -- "$tool" decompose --help
 # enhance: the enhancement raises the NS variance, the smoothing lowers it, weights 1 keep the mesh
 "$tool" enhance "$data/elephant.off" --weights 1,3,3 -o enhanced.off --json --quiet > enhance.json &&
@@ -153,14 +153,80 @@ assert len(a) == len(b) == 3 * 2775 and max(abs(x - y) for x, y in zip(a, b)) < 
   pass || fail "denoise with 0 iterations changed the vertices"
 expect 2 '--sigma must be a number > 0' -- "$tool" denoise "$data/elephant.off" --sigma 0
 expect 2 '--anchor-weight must be a number > 0' -- "$tool" denoise "$data/elephant.off" --anchor-weight -1
-expect 2 'take whole numbers' -- "$tool" denoise "$data/elephant.off" --iterations 1.5
-expect 2 'must name an .off or .ply file' -- "$tool" denoise "$data/elephant.off" -o out.obj
+expect 2 '--iterations must be a whole number' -- "$tool" denoise "$data/elephant.off" --iterations 1.5
+expect 2 'must end in .off, .obj, .ply or .stl' -- "$tool" denoise "$data/elephant.off" -o out.vtp
 expect 2 'exactly one NOISY' -- "$tool" denoise
 expect 1 'no such file' -- "$tool" denoise missing.off -o out.off
 cp "$data/elephant.off" mine3.off
 expect 1 'refusing to overwrite the input' -- "$tool" denoise mine3.off -o mine3.off
 cmp -s mine3.off "$data/elephant.off" && pass || fail "denoise modified its input"
 expect 0 'Usage: heat_diffusion denoise' -- "$tool" denoise --help
+
+
+# The options every subcommand that diffuses shares (tools/Heat_diffusion/diffusion_options.h):
+# the same names in --help, the same checks and messages.
+for c in diffuse features hks decompose enhance denoise; do
+  help=$("$tool" "$c" --help)
+  for opt in '--sigma S' '--time T' '--kernel K' '-m M' '--coarse N' '-o ' '--json' '--quiet' 'A progress bar'; do
+    grep -qF -- "$opt" <<<"$help" && pass || fail "$c --help lacks '$opt'"
+  done
+  expect 2 "--kernel must be 'spectral' or 'local', not 'magic'" -- "$tool" "$c" "$data/elephant.off" --kernel magic
+  expect 2 "-m must be a whole number from 1 to 1000000, not '1e30'" -- "$tool" "$c" "$data/elephant.off" -m 1e30
+  expect 2 "--sigma must be a number > 0 or 'inf'" -- "$tool" "$c" "$data/elephant.off" --sigma -inf
+  expect 2 '--coarse' -- "$tool" "$c" "$data/elephant.off" --coarse 1e30
+done
+# --coarse N: the size used and whether it was automatic, in --json; heat still conserved
+"$tool" diffuse "$data/fandisk.off" -m 40 --coarse 2000 -k 0,10 -o coarse --json --quiet > coarse.json &&
+  python3 -c '
+import json; d = json.load(open("coarse.json")); c = d["coarse"]; h = d["total_heat"]
+assert c["automatic"] is False and 1500 <= c["vertex_count"] <= 2500, c
+assert abs(h["10"] - h["0"]) <= 1e-10 * abs(h["0"]), h' && pass || fail "diffuse --coarse 2000 JSON"
+expect 0 '"coarse": \{"vertex_count": 0, "automatic": false\}' -- "$tool" diffuse "$data/elephant.off" -m 20 --coarse 0 -k 1 -o c0 --json --quiet --no-baseline
+expect 0 '"coarse": \{"vertex_count": 0, "automatic": true\}' -- "$tool" diffuse "$data/elephant.off" -m 20 -k 1 -o c1 --json --quiet --no-baseline
+expect 0 '"coarse": \{"vertex_count": (49[0-9]|50[0-9]), "automatic": false\}' -- "$tool" hks "$data/elephant.off" -m 20 --coarse 500 -o c.ply --json --quiet
+expect 2 "--coarse must be 0 \(no coarse level\) or at least 4, not '2'" -- "$tool" diffuse "$data/elephant.off" --coarse 2
+expect 2 "--coarse must be a whole number from 0 to 1000000000, not '-1'" -- "$tool" features "$data/elephant.off" --coarse -1
+expect 2 '--coarse: denoise_mesh\(\) does not take' -- "$tool" denoise "$data/elephant.off" --coarse 100
+# the global isotropic baseline of the paper's Fig. 5 next to the total heat, for the same k
+if python3 -c '
+import json, math; d = json.load(open("diffuse.json")); h, g = d["total_heat"], d["global_total_heat"]
+assert set(g) == set(h), (g, h)
+assert all(math.isfinite(v) and abs(v / g["0"] - 1) < 0.2 for v in g.values()), g
+assert d["global_baseline"]["sigma"] is None and d["global_baseline"]["eigenpairs"] == 60, d'; then pass; else fail "diffuse global_total_heat"; fi
+expect 0 '' -- "$tool" diffuse "$data/elephant.off" -m 20 -k 1 -o nb --json --quiet --no-baseline
+"$tool" diffuse "$data/elephant.off" -m 20 -k 1 -o nb --json --quiet --no-baseline | grep -q global_total_heat &&
+  fail "--no-baseline still reports global_total_heat" || pass
+# --kernel local: no eigenpairs; the options of the eigenpairs are refused, not ignored
+"$tool" diffuse "$data/elephant.off" --kernel local -k 0,3 -o loc --json --quiet --no-baseline > local.json &&
+  python3 -c '
+import json; d = json.load(open("local.json")); h = d["total_heat"]
+assert d["kernel"] == "local" and "eigenpairs" not in d and "coarse" not in d, d
+assert abs(h["3"] - h["0"]) <= 1e-12 * abs(h["0"]) * 100, h' && pass || fail "diffuse --kernel local"
+for c in features decompose enhance; do
+  out_name=loc_$c; [ "$c" = enhance ] && out_name=loc_enhanced.off
+  expect 0 '"kernel": "local"' -- "$tool" "$c" "$data/elephant.off" --kernel local -o "$out_name" --json --quiet
+done
+expect 2 '-m is the number of eigenpairs of the spectral kernel: --kernel local computes none' -- "$tool" diffuse "$data/elephant.off" --kernel local -m 10
+expect 2 '--coarse is the coarse level of the eigen solve: --kernel local computes none' -- "$tool" features "$data/elephant.off" --kernel local --coarse 100
+expect 2 '--scale-invariant needs the eigenvalues' -- "$tool" decompose "$data/elephant.off" --kernel local --scale-invariant
+expect 2 '--kernel local: the heat kernel signature is a sum over the eigenpairs' -- "$tool" hks "$data/elephant.off" --kernel local
+expect 2 '--kernel local: denoise_mesh\(\) uses the spectral kernel only' -- "$tool" denoise "$data/elephant.off" --kernel local
+# -k is the number of diffusion steps everywhere: the scales (diffuse, features), the steps
+# of one level (decompose, enhance; also --steps-per-level), the steps per iteration (denoise)
+expect 0 '"steps_per_level": 2' -- "$tool" decompose "$data/elephant.off" -m 20 -k 2 --levels 2 -o deck --json --quiet
+expect 2 'give the steps per level once' -- "$tool" decompose "$data/elephant.off" -k 2 --steps-per-level 2
+expect 2 "-k must be a whole number from 1 to 1000000 here" -- "$tool" enhance "$data/elephant.off" -k 0
+expect 2 "-k must be a whole number from 0 to 1000000, not '1,2'" -- "$tool" denoise "$data/elephant.off" -k 1,2
+# the progress bar: on stderr, for the eigen solve and the diffusion steps; never with
+# --quiet, and not when stderr is not a terminal
+out=$(HEAT_DIFFUSION_PROGRESS=always "$tool" diffuse "$data/elephant.off" -m 20 -k 0,20 -o prog 2>&1 >/dev/null)
+grep -q 'eigen solve \[' <<<"$out" && grep -q 'diffusion \[#' <<<"$out" && pass || fail "no progress bar: $out"
+out=$(HEAT_DIFFUSION_PROGRESS=always "$tool" enhance "$data/elephant.off" -m 20 -o prog_e.off 2>&1 >/dev/null)
+grep -q 'eigen solve \[' <<<"$out" && pass || fail "no enhance progress bar: $out"
+out=$(HEAT_DIFFUSION_PROGRESS=always "$tool" features "$data/elephant.off" -m 20 -o prog --quiet 2>&1 >/dev/null)
+[ -z "$out" ] && pass || fail "--quiet still shows a progress bar: $out"
+out=$("$tool" diffuse "$data/elephant.off" -m 20 -k 0,20 -o prog 2>&1 >/dev/null)
+grep -q '\[#' <<<"$out" && fail "progress bar without a terminal: $out" || pass
 
 echo "test_cli: $passed passed, $failed failed"
 [ "$failed" -eq 0 ]

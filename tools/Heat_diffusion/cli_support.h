@@ -13,6 +13,12 @@
 #include <CGAL/Polygon_mesh_processing/IO/polygon_mesh_io.h>
 #include <CGAL/Polygon_mesh_processing/triangulate_faces.h>
 #include <CGAL/Surface_mesh.h>
+#include <CGAL/boost/graph/IO/OBJ.h>
+#include <CGAL/boost/graph/IO/OFF.h>
+#include <CGAL/boost/graph/IO/PLY.h>
+#include <CGAL/boost/graph/IO/STL.h>
+
+#include <unistd.h>
 
 #include <algorithm>
 #include <cctype>
@@ -27,6 +33,7 @@
 #include <fstream>
 #include <iomanip>
 #include <map>
+#include <new>
 #include <sstream>
 #include <stdexcept>
 #include <string>
@@ -202,32 +209,72 @@ inline std::vector<std::size_t> parse_steps(const std::string& text)
   return steps;
 }
 
-// Parses a number of an option, with its valid range.
-inline double parse_number(const std::string& option, const std::string& text, double lowest, bool strict)
+// A number as the messages print it: 0, 1, 1000000, 0.5.
+inline std::string format_number(double x)
+{
+  std::ostringstream os;
+  os << std::setprecision(12) << x;
+  return os.str();
+}
+
+// Parses a finite number of an option, > lowest (strict) or >= lowest, and <= highest.
+// Anything else (text, NaN, infinity, out of range) is a usage error naming the option.
+inline double parse_number(const std::string& option, const std::string& text, double lowest, bool strict,
+                           double highest = std::numeric_limits<double>::max())
 {
   char* end = nullptr;
   const double x = std::strtod(text.c_str(), &end);
-  if(text.empty() || *end != '\0' || !std::isfinite(x) || (strict ? !(x > lowest) : !(x >= lowest)))
-    throw Usage_error(option + " must be a number " + (strict ? "> " : ">= ") + std::to_string(lowest) + ", not '" +
-                      text + "'");
+  if(text.empty() || *end != '\0' || !std::isfinite(x) || (strict ? !(x > lowest) : !(x >= lowest)) || x > highest)
+    throw Usage_error(option + " must be a number " + (strict ? "> " : ">= ") + format_number(lowest) +
+                      (highest < std::numeric_limits<double>::max() ? " and <= " + format_number(highest) : "") +
+                      ", not '" + text + "'");
   return x;
 }
 
-// A progress bar on stderr, shown only when stderr is a terminal.
+// Parses a whole number of an option in [lowest, highest] (bounds well inside the
+// range of std::size_t and of double's exact integers): the conversion to std::size_t
+// that follows is always defined. "1e3" is accepted, "2.5", "1e30" and "-1" are not.
+inline std::size_t parse_count(const std::string& option, const std::string& text, double lowest, double highest)
+{
+  char* end = nullptr;
+  const double x = std::strtod(text.c_str(), &end);
+  if(text.empty() || *end != '\0' || !std::isfinite(x) || x != std::floor(x) || x < lowest || x > highest)
+    throw Usage_error(option + " must be a whole number from " + format_number(lowest) + " to " +
+                      format_number(highest) + ", not '" + text + "'");
+  return std::size_t(x);
+}
+
+// A progress bar on stderr: shown when stderr is a terminal and not --quiet, and only
+// once the work has lasted a second (short work draws nothing). The environment
+// variable HEAT_DIFFUSION_PROGRESS=always shows it at once whatever stderr is (for
+// tests), =never hides it.
 class Progress_bar
 {
 public:
-  Progress_bar(std::string label, bool enabled) : label_(std::move(label)), enabled_(enabled) {}
-  ~Progress_bar()
+  Progress_bar(std::string label, bool enabled) : label_(std::move(label)), enabled_(enabled)
   {
-    if(shown_)
-      std::cerr << "\r" << std::string(label_.size() + 40, ' ') << "\r" << std::flush;
+    const char* mode = std::getenv("HEAT_DIFFUSION_PROGRESS");
+    const std::string m = mode ? mode : "";
+    if(m == "never")
+      enabled_ = false;
+    else if(m == "always")
+      delay_ = 0.;
+    else
+      enabled_ = enabled_ && isatty(STDERR_FILENO);
   }
+  ~Progress_bar() { finish(); }
+  Progress_bar(const Progress_bar&) = delete;
+  Progress_bar& operator=(const Progress_bar&) = delete;
+
+  // Called with the fraction done, in [0, 1]; always returns true (never cancels).
   bool operator()(double fraction)
   {
     if(!enabled_)
       return true;
-    const int percent = int(100 * (std::max)(0., (std::min)(1., fraction)));
+    const double elapsed = std::chrono::duration<double>(std::chrono::steady_clock::now() - start_).count();
+    if(!shown_ && elapsed < delay_)
+      return true;
+    const int percent = int(100 * (std::max)(0., (std::min)(1., std::isfinite(fraction) ? fraction : 0.)));
     if(percent != last_)
     {
       last_ = percent;
@@ -237,13 +284,51 @@ public:
     }
     return true;
   }
+  // Clears the bar from the terminal line.
+  void finish()
+  {
+    if(shown_)
+      std::cerr << "\r" << std::string(label_.size() + 30, ' ') << "\r" << std::flush;
+    shown_ = false;
+    last_ = -1;
+  }
 
 private:
   std::string label_;
   bool enabled_;
+  double delay_ = 1.;
+  std::chrono::steady_clock::time_point start_ = std::chrono::steady_clock::now();
   bool shown_ = false;
   int last_ = -1;
 };
+
+// Runs a call into the package for the input file `input`: every exception it
+// throws (invalid input, a failed eigen solve or factorisation, a logic error, out of
+// memory) becomes an Input_error whose message starts with the file's name.
+template <typename Function>
+auto for_input(const std::string& input, Function&& function) -> decltype(function())
+{
+  try
+  {
+    return function();
+  }
+  catch(const Usage_error&)
+  {
+    throw;
+  }
+  catch(const Input_error&)
+  {
+    throw;
+  }
+  catch(const std::bad_alloc&)
+  {
+    throw Input_error(input + ": out of memory");
+  }
+  catch(const std::exception& e)
+  {
+    throw Input_error(input + ": " + e.what());
+  }
+}
 
 inline Json_object timings_json(const Stage_timer& timer)
 {
@@ -467,7 +552,8 @@ std::size_t read_triangle_mesh(const std::string& path, Mesh& mesh)
   return polygons;
 }
 
-// The output path must not name the input: the tool never overwrites its input.
+// The output path must not name the input (the tool never overwrites its input), and
+// must not name something other than a regular file: checked before any work.
 inline void check_output_path(const std::string& output, const std::vector<std::string>& inputs)
 {
   std::error_code ec;
@@ -475,51 +561,93 @@ inline void check_output_path(const std::string& output, const std::vector<std::
     if(fs::absolute(output, ec).lexically_normal() == fs::absolute(input, ec).lexically_normal() ||
        (fs::exists(output, ec) && fs::equivalent(output, input, ec)))
       throw Input_error(output + ": refusing to overwrite the input file");
+  if(fs::exists(output, ec) && !fs::is_regular_file(output, ec))
+    throw Input_error(output + ": cannot write the output file (it exists and is not a regular file)");
 }
 
-// Writes through `write(std::ostream&)` into a temporary file next to `path`, then
-// renames it: a failed run leaves no half-written output. The temporary name is
-// one no file has (an input may be called OUT.partial), and the target must be a
-// regular file if it exists: renaming over /dev/stdout, run as root, would replace
-// the device with a file.
+// The output files of one run. Each file is written into a temporary file next to its
+// target; commit() renames them all at the end, and the destructor removes whatever
+// was not committed: a failed run (at any stage, in any file) leaves no output and no
+// temporary file. The temporary name is one no file has (an input may be called
+// OUT.partial), and a target must be a regular file if it exists: renaming over
+// /dev/stdout, run as root, would replace the device with a file.
+class Output_files
+{
+public:
+  Output_files() = default;
+  Output_files(const Output_files&) = delete;
+  Output_files& operator=(const Output_files&) = delete;
+  ~Output_files()
+  {
+    std::error_code ec;
+    for(const auto& file : staged_)
+      fs::remove(file.first, ec);
+  }
+
+  // Writes through `write(std::ostream&)` (which returns the stream or a bool) into
+  // the temporary file of `path`.
+  template <typename Writer>
+  void add(const std::string& path, const Writer& write)
+  {
+    const fs::path target(path);
+    std::error_code ec;
+    if(fs::exists(target, ec) && !fs::is_regular_file(target, ec))
+      throw Input_error(path + ": cannot write the output file (it exists and is not a regular file)");
+    if(target.has_parent_path() && !fs::exists(target.parent_path(), ec))
+      fs::create_directories(target.parent_path(), ec);
+    fs::path temporary = target.string() + ".partial";
+    for(int k = 1; fs::exists(fs::symlink_status(temporary, ec)) || is_staged(temporary); ++k)
+      temporary = target.string() + ".partial" + std::to_string(k);
+    std::ofstream os(temporary, std::ios::binary);
+    if(!os)
+      throw Input_error(path + ": cannot write the output file");
+    staged_.emplace_back(temporary, target);
+    bool written = false;
+    written = bool(write(os)) && bool(os.flush());
+    os.close();
+    if(!written || !os)
+      throw Input_error(path + ": cannot write the output file");
+  }
+
+  // Renames every temporary file to its target. If one rename fails, the targets
+  // already renamed are removed too: all or nothing.
+  void commit()
+  {
+    std::error_code ec;
+    for(std::size_t i = 0; i < staged_.size(); ++i)
+    {
+      fs::rename(staged_[i].first, staged_[i].second, ec);
+      if(ec)
+      {
+        const std::string message = staged_[i].second.string() + ": cannot write the output file (" + ec.message() + ")";
+        for(std::size_t j = 0; j < i; ++j)
+          fs::remove(staged_[j].second, ec);
+        staged_.erase(staged_.begin(), staged_.begin() + std::ptrdiff_t(i));
+        throw Input_error(message);
+      }
+    }
+    staged_.clear();
+  }
+
+private:
+  bool is_staged(const fs::path& temporary) const
+  {
+    for(const auto& file : staged_)
+      if(file.first == temporary)
+        return true;
+    return false;
+  }
+
+  std::vector<std::pair<fs::path, fs::path> > staged_;  // temporary, target
+};
+
+// One output file, written atomically (temporary file + rename).
 template <typename Writer>
 void write_atomically(const std::string& path, const Writer& write)
 {
-  const fs::path target(path);
-  std::error_code ec;
-  if(fs::exists(target, ec) && !fs::is_regular_file(target, ec))
-    throw Input_error(path + ": cannot write the output file (it exists and is not a regular file)");
-  if(target.has_parent_path() && !fs::exists(target.parent_path(), ec))
-    fs::create_directories(target.parent_path(), ec);
-  fs::path temporary = target.string() + ".partial";
-  for(int k = 1; fs::exists(fs::symlink_status(temporary, ec)); ++k)
-    temporary = target.string() + ".partial" + std::to_string(k);
-  {
-    std::ofstream os(temporary, std::ios::binary);
-    bool written = false;
-    try
-    {
-      written = os && write(os) && os.flush();
-    }
-    catch(...)
-    {
-      os.close();
-      fs::remove(temporary, ec);
-      throw;
-    }
-    if(!written)
-    {
-      os.close();
-      fs::remove(temporary, ec);
-      throw Input_error(path + ": cannot write the output file");
-    }
-  }
-  fs::rename(temporary, target, ec);
-  if(ec)
-  {
-    fs::remove(temporary, ec);
-    throw Input_error(path + ": cannot write the output file (" + ec.message() + ")");
-  }
+  Output_files files;
+  files.add(path, write);
+  files.commit();
 }
 
 // A diverging colour map (Moreland's cool-warm): blue for negative values (concave
@@ -577,9 +705,9 @@ inline Field_statistics statistics(const std::vector<double>& values)
 
 // Writes `mesh` as a binary PLY with the given per-vertex scalar fields as double
 // properties, and the first one also as the per-vertex colour, saturated at
-// `half_range` (default: robust_half_range of that field).
+// `half_range` (default: robust_half_range of that field), into `files`.
 template <typename Point>
-void write_fields_ply(const std::string& path, const CGAL::Surface_mesh<Point>& input,
+void write_fields_ply(Output_files& files, const std::string& path, const CGAL::Surface_mesh<Point>& input,
                       const std::vector<std::pair<std::string, std::vector<double> > >& fields,
                       double half_range = 0.)
 {
@@ -599,11 +727,62 @@ void write_fields_ply(const std::string& path, const CGAL::Surface_mesh<Point>& 
     for(auto v : mesh.vertices())
       colors[v] = diverging_color(fields.front().second[v.idx()], half_range);
   }
-  write_atomically(path, [&](std::ostream& os) {
+  files.add(path, [&](std::ostream& os) {
     CGAL::IO::set_binary_mode(os);  // use_binary_mode() alone is ignored on streams: ASCII, 6 digits
     return CGAL::IO::write_PLY(os, mesh, "written by CGAL Heat_diffusion",
                                CGAL::parameters::use_binary_mode(true));
   });
+}
+
+// The same, as a single output file.
+template <typename Point>
+void write_fields_ply(const std::string& path, const CGAL::Surface_mesh<Point>& input,
+                      const std::vector<std::pair<std::string, std::vector<double> > >& fields,
+                      double half_range = 0.)
+{
+  Output_files files;
+  write_fields_ply(files, path, input, fields, half_range);
+  files.commit();
+}
+
+// The mesh format of an output path, from its extension: a usage error if the tool
+// cannot write it.
+inline std::string mesh_format(const std::string& path)
+{
+  std::string extension = fs::path(path).extension().string();
+  for(char& ch : extension)
+    ch = char(std::tolower(static_cast<unsigned char>(ch)));
+  if(extension != ".off" && extension != ".obj" && extension != ".ply" && extension != ".stl")
+    throw Usage_error("the output " + path + " must end in .off, .obj, .ply or .stl");
+  return extension;
+}
+
+// Writes a mesh atomically, by the extension of `path`: OFF and OBJ as text with 17
+// significant digits (exact doubles), PLY and STL binary.
+template <typename Point>
+void write_mesh(const std::string& path, const CGAL::Surface_mesh<Point>& mesh)
+{
+  const std::string format = mesh_format(path);
+  write_atomically(path, [&](std::ostream& os) {
+    const auto np = CGAL::parameters::stream_precision(17);
+    if(format == ".off")
+      return CGAL::IO::write_OFF(os, mesh, np);
+    if(format == ".obj")
+      return CGAL::IO::write_OBJ(os, mesh, np);
+    CGAL::IO::set_binary_mode(os);
+    if(format == ".ply")
+      return CGAL::IO::write_PLY(os, mesh, "written by CGAL Heat_diffusion", CGAL::parameters::use_binary_mode(true));
+    return CGAL::IO::write_STL(os, mesh, CGAL::parameters::use_binary_mode(true));
+  });
+}
+
+// The distance between two points, without overflow or underflow (coordinates near
+// 1e300 or 1e-300 square to infinity or zero).
+template <typename Point>
+double point_distance(const Point& p, const Point& q)
+{
+  return std::hypot(CGAL::to_double(p.x()) - CGAL::to_double(q.x()), CGAL::to_double(p.y()) - CGAL::to_double(q.y()),
+                    CGAL::to_double(p.z()) - CGAL::to_double(q.z()));
 }
 
 // The default output name: the input's stem with `suffix`, in the current folder.

@@ -7,67 +7,74 @@
 #define CGAL_HEAT_DIFFUSION_TOOLS_COMMAND_DENOISE_H
 
 #include "cli_support.h"
+#include "diffusion_options.h"
 
 #include <CGAL/Heat_diffusion/denoising.h>
 
+#include <functional>
 #include <iostream>
 #include <string>
 
 namespace heat_diffusion_cli {
 
-const char* const denoise_help =
-    "Usage: heat_diffusion denoise NOISY [-o OUT] [--iterations N] [--sigma S] [--time T] [-m M]\n"
-    "                              [-k K] [--anchor-weight W] [--json] [--quiet]\n"
-    "\n"
-    "Denoises a triangle mesh: each iteration diffuses the Normal Signature with the\n"
-    "edge-weighted heat kernel of the current mesh, averages the normals of each one-ring\n"
-    "weighted by |NS| (the paper's eq. 22, made robust), and moves the vertices to match the\n"
-    "diffused signature along those normals in the least-squares sense (eq. 23). The\n"
-    "connectivity is kept.\n"
-    "\n"
-    "Options:\n"
-    "  -o OUT            the denoised mesh, OFF or PLY by extension (default: NOISY's name\n"
-    "                    with _denoised.off, in the current folder); never the input\n"
-    "  --iterations N    outer iterations, each on the previous result (default 2)\n"
-    "  --sigma S         edge-weight width of the heat kernel (default 1; much smaller values\n"
-    "                    make the eigen solve fail on noisy meshes)\n"
-    "  --time T          time of one diffusion step (default 1)\n"
-    "  -m M              number of eigenpairs of the truncated kernel (default 150)\n"
-    "  -k K              diffusion steps of the signature per iteration (default 1)\n"
-    "  --anchor-weight W weight that holds vertices at their current positions (default 0.7)\n"
-    "  --json            print a JSON summary on stdout: the parameters, the mean and largest\n"
-    "                    vertex displacement (in mean edge lengths) and the time of each stage\n"
-    "                    in milliseconds\n"
-    "  --quiet           print nothing but errors (and the JSON summary if asked for)\n"
-    "  -h, --help        this text\n";
+inline Diffusion_spec denoise_spec()
+{
+  Diffusion_spec spec;
+  spec.sigma_default = "1";
+  spec.sigma_note = "much smaller values make the eigen solve fail on noisy meshes";
+  spec.steps = Diffusion_spec::single_step;
+  spec.steps_default = "1";
+  spec.steps_help = "diffusion steps of the signature per iteration, 0 to 1000000 (default 1)";
+  // CGAL::Heat_diffusion::denoise_mesh() builds its diffusion from sigma, time and
+  // number_of_eigenpairs only: the other options would be silently ignored.
+  spec.local_refusal = "denoise_mesh() uses the spectral kernel only";
+  spec.coarse_refusal = "denoise_mesh() does not take the coarse level (it applies the automatic choice)";
+  spec.scale_invariant = false;
+  return spec;
+}
+
+inline std::string denoise_help()
+{
+  return "Usage: heat_diffusion denoise NOISY [-o OUT] [--iterations N] [--sigma S] [--time T]\n"
+         "                              [--kernel spectral] [-m M] [-k K] [--anchor-weight W] [--json] [--quiet]\n"
+         "\n"
+         "Denoises a triangle mesh: each iteration diffuses the Normal Signature with the\n"
+         "edge-weighted heat kernel of the current mesh, averages the normals of each one-ring\n"
+         "weighted by |NS| (the paper's eq. 22, made robust), and moves the vertices to match the\n"
+         "diffused signature along those normals in the least-squares sense (eq. 23). The\n"
+         "connectivity is kept.\n"
+         "\n"
+         "Options:\n" +
+         help_option("--iterations N", "outer iterations, each on the previous result, 0 to 10000 (default 2)") +
+         diffusion_options_help(denoise_spec()) +
+         help_option("--anchor-weight W", "weight that holds vertices at their current positions (default 0.7)") +
+         help_option("-o OUT", "the denoised mesh, .off, .obj, .ply or .stl (default: NOISY's name with "
+                               "_denoised.off, in the current folder); never the input") +
+         help_option("--json", "print a JSON summary on stdout: the parameters, the mean and largest vertex "
+                               "displacement (in mean edge lengths) and the time of each stage in milliseconds") +
+         common_options_help();
+}
 
 inline int run_denoise(int argc, char** argv)
 {
-  Arguments args({"--json", "--quiet", "-h", "--help"},
-                 {"-o", "--iterations", "--sigma", "--time", "-m", "-k", "--anchor-weight"});
+  const Diffusion_spec spec = denoise_spec();
+  Arguments args = diffusion_arguments(spec, {}, {"--iterations", "--anchor-weight"});
   args.parse(argc, argv, 2);
   if(args.flag("-h") || args.flag("--help"))
   {
-    std::cout << denoise_help;
+    std::cout << denoise_help();
     return success;
   }
   if(args.positional().size() != 1)
     throw Usage_error("denoise takes exactly one NOISY mesh argument");
   const std::string input = args.positional()[0];
-  const double iterations = parse_number("--iterations", args.value("--iterations", "2"), 0., false);
-  const double sigma = parse_number("--sigma", args.value("--sigma", "1"), 0., true);
-  const double time = parse_number("--time", args.value("--time", "1"), 0., true);
-  const double m = parse_number("-m", args.value("-m", "150"), 1., false);
-  const double k = parse_number("-k", args.value("-k", "1"), 0., false);
+  const Diffusion_options o = parse_diffusion_options(args, spec);
+  const std::size_t iterations = parse_count("--iterations", args.value("--iterations", "2"), 0, 10000);
+  const std::size_t k = o.steps.front();
   const double anchor_weight = parse_number("--anchor-weight", args.value("--anchor-weight", "0.7"), 0., true);
-  if(iterations != std::floor(iterations) || m != std::floor(m) || k != std::floor(k))
-    throw Usage_error("--iterations, -m and -k take whole numbers");
   const std::string output = args.value("-o", default_output(input, "_denoised.off"));
-  const std::string extension = fs::path(output).extension().string();
-  if(extension != ".off" && extension != ".ply")
-    throw Usage_error("-o must name an .off or .ply file, not '" + output + "'");
+  mesh_format(output);
   check_output_path(output, {input});
-  const bool quiet = args.flag("--quiet");
 
   Stage_timer timer;
   Mesh mesh;
@@ -75,49 +82,50 @@ inline int run_denoise(int argc, char** argv)
   const Mesh noisy = mesh;
   timer.stop("read");
 
-  try
-  {
+  // One call: denoise_mesh()'s iterations are not independent calls on the previous
+  // result (its normal filtering bounds the total displacement by the noise level of
+  // the input). The progress bar follows its progress_callback, where it reports one.
+  Progress_bar progress("denoising", !o.quiet);
+  for_input(input, [&] {
     HD::denoise_mesh(mesh, HD::parameters::combine(CGAL::parameters::number_of_iterations(unsigned(iterations)),
-                                                   HD::parameters::sigma(sigma), HD::parameters::time(time),
-                                                   HD::parameters::number_of_eigenpairs(std::size_t(m)),
-                                                   HD::parameters::number_of_steps(std::size_t(k)),
-                                                   HD::parameters::anchor_weight(anchor_weight)));
-  }
-  catch(const std::invalid_argument& e)
-  {
-    throw Input_error(input + ": " + e.what());
-  }
+                                                   HD::parameters::sigma(o.sigma), HD::parameters::time(o.time),
+                                                   HD::parameters::number_of_eigenpairs(o.eigenpairs),
+                                                   HD::parameters::number_of_steps(k),
+                                                   HD::parameters::anchor_weight(anchor_weight),
+                                                   HD::parameters::progress_callback(
+                                                       std::function<bool(double)>(std::ref(progress)))));
+  });
+  progress.finish();
   timer.stop("denoise");
 
-  write_atomically(output, [&](std::ostream& os) {
-    return extension == ".ply" ? CGAL::IO::write_PLY(os, mesh, CGAL::parameters::stream_precision(17))
-                               : CGAL::IO::write_OFF(os, mesh, CGAL::parameters::stream_precision(17));
-  });
-  timer.stop("write");
-
-  // How far the vertices moved, in mean edge lengths of the input: a scale-free figure.
-  // std::hypot, not the squared distance, which overflows for coordinates near 1e300
-  // and underflows near 1e-300.
-  const auto distance = [](const Kernel::Point_3& p, const Kernel::Point_3& q) {
-    return std::hypot(p.x() - q.x(), p.y() - q.y(), p.z() - q.z());
-  };
-  double edge_sum = 0, displacement_sum = 0, displacement_max = 0;
+  // How far the vertices moved, in mean edge lengths of the input: a scale-free
+  // figure, measured before writing (a failure leaves no output). Distances by
+  // std::hypot and running means: no overflow for coordinates near 1e300, no
+  // underflow near 1e-300.
+  double mean_edge = 0, displacement_mean = 0, displacement_max = 0, count = 0;
   for(auto e : noisy.edges())
-    edge_sum += distance(noisy.point(noisy.vertex(e, 0)), noisy.point(noisy.vertex(e, 1)));
-  const double mean_edge = noisy.number_of_edges() > 0 ? edge_sum / double(noisy.number_of_edges()) : 1.;
+  {
+    count += 1;
+    mean_edge += (point_distance(noisy.point(noisy.vertex(e, 0)), noisy.point(noisy.vertex(e, 1))) - mean_edge) / count;
+  }
+  if(!(mean_edge > 0))
+    mean_edge = 1.;
+  count = 0;
   for(auto v : mesh.vertices())
   {
-    const double d = distance(mesh.point(v), noisy.point(v)) / mean_edge;
-    displacement_sum += d;
+    const double d = point_distance(mesh.point(v), noisy.point(v)) / mean_edge;
+    count += 1;
+    displacement_mean += (d - displacement_mean) / count;
     displacement_max = (std::max)(displacement_max, d);
   }
-  const double displacement_mean = mesh.number_of_vertices() > 0 ? displacement_sum / double(mesh.number_of_vertices()) : 0.;
+  write_mesh(output, mesh);
+  timer.stop("write");
 
-  if(!quiet)
-    std::cerr << input << ": " << mesh.number_of_vertices() << " vertices, " << std::size_t(iterations)
+  if(!o.quiet)
+    std::cerr << input << ": " << mesh.number_of_vertices() << " vertices, " << iterations
               << " iterations, vertices moved by " << displacement_mean << " mean edge lengths on average (at most "
               << displacement_max << ")\nwritten to " << output << "\n";
-  if(args.flag("--json"))
+  if(o.json)
   {
     Json_object displacement;
     displacement.number("mean", displacement_mean).number("max", displacement_max);
@@ -128,11 +136,9 @@ inline int run_denoise(int argc, char** argv)
         .integer("vertices", (long long)mesh.number_of_vertices())
         .integer("faces", (long long)mesh.number_of_faces())
         .integer("triangulated_faces", (long long)triangulated)
-        .integer("iterations", (long long)iterations)
-        .number("sigma", sigma)
-        .number("time", time)
-        .integer("eigenpairs", (long long)m)
-        .integer("steps", (long long)k)
+        .integer("iterations", (long long)iterations);
+    add_diffusion_json(summary, o, mesh.number_of_vertices(), nullptr);
+    summary.integer("steps", (long long)k)
         .number("anchor_weight", anchor_weight)
         .object("displacement_in_mean_edge_lengths", displacement)
         .object("timings_ms", timings_json(timer));

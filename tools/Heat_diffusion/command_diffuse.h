@@ -7,13 +7,9 @@
 #define CGAL_HEAT_DIFFUSION_TOOLS_COMMAND_DIFFUSE_H
 
 #include "cli_support.h"
+#include "diffusion_options.h"
 
-#include <CGAL/Heat_diffusion/Anisotropic_heat_diffusion.h>
-
-#include <unistd.h>
-
-#include <fstream>
-#include <functional>
+#include <cmath>
 #include <iostream>
 #include <limits>
 #include <memory>
@@ -22,204 +18,157 @@
 
 namespace heat_diffusion_cli {
 
-const char* const diffuse_help =
-    "Usage: heat_diffusion diffuse MESH [--sigma S] [--time T] [--kernel spectral|local] [-m M]\n"
-    "                              [-k K1,K2,...] [--field ns|FILE] [--scale-invariant] [-o PREFIX]\n"
-    "                              [--json] [--quiet]\n"
-    "\n"
-    "Diffuses a scalar field over the mesh with the edge-weighted heat kernel of the paper:\n"
-    "F^k = A_t^k F^0, where A_t convolves each vertex's heat with the kernel over its heat\n"
-    "region. The total heat sum_i F^k(i) is conserved exactly.\n"
-    "\n"
-    "Options:\n"
-    "  --sigma S         edge-weight width: small preserves features (0.1, default), large\n"
-    "                    smooths (1); 'inf' gives isotropic diffusion\n"
-    "  --time T          time of one step, on the mesh rescaled to area = vertex count (default 1)\n"
-    "  --kernel K        'spectral' (default): the paper's kernel from M eigenpairs, accurate\n"
-    "                    for large T only; 'local': each kernel column computed around its\n"
-    "                    vertex without eigenpairs and without truncation (relative error\n"
-    "                    below 1e-3 at any T; cost per vertex grows like T^1.5)\n"
-    "  -m M              number of eigenpairs of the spectral kernel (default 150)\n"
-    "  -k K1,K2,...      the steps k to write (default 0,10,40)\n"
-    "  --field F         'ns' (default): the Normal Signature; or a text file with one number\n"
-    "                    per vertex, in the order of the mesh file's vertices\n"
-    "  --scale-invariant the scale-invariant kernel of the paper's eq. 14 (spectral kernel only)\n"
-    "  -o PREFIX         outputs PREFIX_k<K>.ply (default: MESH's name with _diffused, in the\n"
-    "                    current folder): binary PLYs with the per-vertex property 'field' and\n"
-    "                    a diverging colour map saturated at the 98th percentile of |F^0|, so\n"
-    "                    that the pictures of different k compare\n"
-    "  --json            print a JSON summary on stdout: the total heat at each k, the heat\n"
-    "                    regions (min/mean/max size, collapsed), the eigenvalue range\n"
-    "                    (spectral kernel), and the time of each stage in milliseconds\n"
-    "  --quiet           print nothing but errors (and the JSON summary if asked for)\n"
-    "  -h, --help        this text\n"
-    "\n"
-    "A progress bar is shown on stderr during the eigen solve when stderr is a terminal.\n";
-
-inline std::vector<double> read_field(const std::string& path, std::size_t n)
+inline Diffusion_spec diffuse_spec()
 {
-  std::ifstream is(path);
-  if(!is)
-    throw Input_error(path + ": cannot open the field file");
-  std::vector<double> field;
-  std::string token;
-  while(is >> token)
+  Diffusion_spec spec;
+  spec.steps_help = "the steps k to write, 0 to 1000000 (default 0,10,40)";
+  spec.field = true;
+  return spec;
+}
+
+inline std::string diffuse_help()
+{
+  return "Usage: heat_diffusion diffuse MESH [--sigma S] [--time T] [--kernel spectral|local] [-m M]\n"
+         "                              [--coarse N] [-k K1,K2,...] [--field ns|FILE] [--scale-invariant]\n"
+         "                              [-o PREFIX] [--json] [--no-baseline] [--quiet]\n"
+         "\n"
+         "Diffuses a scalar field over the mesh with the edge-weighted heat kernel of the paper:\n"
+         "F^k = A_t^k F^0, where A_t convolves each vertex's heat with the kernel over its heat\n"
+         "region. The total heat sum_i F^k(i) is conserved exactly.\n"
+         "\n"
+         "Options:\n" +
+         diffusion_options_help(diffuse_spec()) +
+         help_option("-o PREFIX",
+                     "outputs PREFIX_k<K>.ply (default: MESH's name with _diffused, in the current folder): binary "
+                     "PLYs with the per-vertex property 'field' and a diverging colour map saturated at the 98th "
+                     "percentile of |F^0|, so that the pictures of different k compare. All are written, or none") +
+         help_option("--json",
+                     "print a JSON summary on stdout: the total heat at each k ('total_heat'), the same for the "
+                     "global isotropic baseline of the paper's Fig. 5 ('global_total_heat': the spectral smoothing "
+                     "sum_j exp(-lambda_j k T) phi_j phi_j^T B F^0 with sigma = inf, one more eigen solve unless "
+                     "--sigma inf), the heat regions (min/mean/max size, collapsed), the eigenvalue range and "
+                     "coarse level (spectral kernel), and the time of each stage in milliseconds") +
+         help_option("--no-baseline", "leave 'global_total_heat' out of the JSON summary (no second eigen solve)") +
+         common_options_help();
+}
+
+// The total heat of the global isotropic smoothing (sigma = inf) of F^0 after the time
+// k t, for each k: the baseline of the paper's Fig. 5. `f0` is by the index of
+// `diffusion`; `kernel` is the spectral kernel already built (used if isotropic).
+inline std::vector<double> global_total_heat(const Mesh& mesh, const Diffusion& diffusion, const Eigen::VectorXd& f0,
+                                             const Heat_kernel* kernel, const Diffusion_options& o,
+                                             const std::string& input, Json_object& baseline)
+{
+  std::unique_ptr<Heat_kernel> isotropic_kernel;
+  const Heat_kernel* isotropic = kernel;
+  if(isotropic == nullptr || !std::isinf(isotropic->sigma()) || isotropic->is_scale_invariant())
   {
-    char* end = nullptr;
-    const double x = std::strtod(token.c_str(), &end);
-    if(*end != '\0' || !std::isfinite(x))
-      throw Input_error(path + ": value " + std::to_string(field.size()) + " ('" + token + "') is not a finite number");
-    field.push_back(x);
+    Diffusion_options iso = o;
+    iso.sigma = std::numeric_limits<double>::infinity();
+    iso.scale_invariant = false;
+    iso.method = HD::Heat_kernel_method::spectral;
+    isotropic_kernel = make_heat_kernel(mesh, iso, input, "isotropic eigen solve");
+    isotropic = isotropic_kernel.get();
   }
-  if(field.size() != n)
-    throw Input_error(path + ": has " + std::to_string(field.size()) + " values, the mesh has " + std::to_string(n) +
-                      " vertices");
-  return field;
+  Eigen::VectorXd g0(f0.size());
+  for(auto v : mesh.vertices())
+    g0[Eigen::Index(isotropic->vertex_index(v))] = f0[Eigen::Index(diffusion.vertex_index(v))];
+  std::vector<double> heat;
+  for(std::size_t k : o.steps)
+    heat.push_back(for_input(input, [&] { return isotropic->global_heat_smoothing(g0, double(k) * o.time).sum(); }));
+  Json_object coarse;
+  coarse.integer("vertex_count", (long long)isotropic->coarse_vertex_count()).boolean("automatic", o.coarse < 0);
+  baseline.string("method", "global spectral heat smoothing, isotropic")
+      .number("sigma", isotropic->sigma())
+      .integer("eigenpairs", (long long)isotropic->number_of_eigenpairs())
+      .object("coarse", coarse);
+  return heat;
 }
 
 inline int run_diffuse(int argc, char** argv)
 {
-  Arguments args({"--json", "--quiet", "--scale-invariant", "-h", "--help"},
-                 {"-o", "--sigma", "--time", "-m", "-k", "--field", "--kernel"});
+  const Diffusion_spec spec = diffuse_spec();
+  Arguments args = diffusion_arguments(spec, {"--no-baseline"}, {});
   args.parse(argc, argv, 2);
   if(args.flag("-h") || args.flag("--help"))
   {
-    std::cout << diffuse_help;
+    std::cout << diffuse_help();
     return success;
   }
   if(args.positional().size() != 1)
     throw Usage_error("diffuse takes exactly one MESH argument");
   const std::string input = args.positional()[0];
-  const std::string sigma_text = args.value("--sigma", "0.1");
-  const double sigma = sigma_text == "inf" ? std::numeric_limits<double>::infinity()
-                                           : parse_number("--sigma", sigma_text, 0., true);
-  const double time = parse_number("--time", args.value("--time", "1"), 0., true);
-  const double m = parse_number("-m", args.value("-m", "150"), 1., false);
-  const std::string kernel_name = args.value("--kernel", "spectral");
-  if(kernel_name != "spectral" && kernel_name != "local")
-    throw Usage_error("--kernel must be 'spectral' or 'local'");
-  const bool local = kernel_name == "local";
-  if(local && args.flag("--scale-invariant"))
-    throw Usage_error("--scale-invariant needs the eigenvalues: use --kernel spectral");
-  const std::vector<std::size_t> steps = parse_steps(args.value("-k", "0,10,40"));
-  const std::string field_source = args.value("--field", "ns");
+  const Diffusion_options o = parse_diffusion_options(args, spec);
   const std::string prefix = args.value("-o", fs::path(input).stem().string() + "_diffused");
   std::vector<std::string> outputs;
-  for(std::size_t k : steps)
+  for(std::size_t k : o.steps)
     outputs.push_back(prefix + "_k" + std::to_string(k) + ".ply");
   for(const std::string& output : outputs)
-    check_output_path(output, {input, field_source});
-  const bool quiet = args.flag("--quiet");
+    check_output_path(output, {input, o.field});
 
   Stage_timer timer;
   Mesh mesh;
   const std::size_t triangulated = read_triangle_mesh(input, mesh);
   timer.stop("read");
-
-  typedef HD::Edge_weighted_heat_kernel<Mesh> Kernel;
-  typedef HD::Anisotropic_heat_diffusion<Mesh> Diffusion;
-  std::unique_ptr<Kernel> kernel;
-  std::unique_ptr<Diffusion> diffusion_pointer;
-  try
-  {
-    if(local)
-    {
-      // no eigen solve: the NCC, L and B, then A_t column by column
-      diffusion_pointer = std::make_unique<Diffusion>(
-          mesh, HD::parameters::combine(HD::parameters::sigma(sigma), HD::parameters::time(time),
-                                        HD::parameters::kernel_method(HD::Heat_kernel_method::local)));
-      timer.stop("ncc_and_local_operator");
-    }
-    else
-    {
-      Progress_bar progress("eigen solve", !quiet && isatty(STDERR_FILENO));
-      kernel = std::make_unique<Kernel>(
-          mesh, HD::parameters::combine(HD::parameters::sigma(sigma),
-                                        HD::parameters::number_of_eigenpairs(std::size_t(m)),
-                                        HD::parameters::scale_invariant_kernel(args.flag("--scale-invariant")),
-                                        HD::parameters::progress_callback(std::ref(progress))));
-      timer.stop("ncc_and_eigen_solve");
-      diffusion_pointer = std::make_unique<Diffusion>(*kernel, time);
-      timer.stop("operator");
-    }
-  }
-  catch(const std::invalid_argument& e)
-  {
-    throw Input_error(input + ": " + e.what());
-  }
-  const Diffusion& diffusion = *diffusion_pointer;
-
-  Eigen::VectorXd f0(static_cast<Eigen::Index>(mesh.number_of_vertices()));
-  if(field_source == "ns")
-    for(auto v : mesh.vertices())
-      f0[Eigen::Index(diffusion.vertex_index(v))] = diffusion.normal_controlled_coordinates().normal_signature(v);
-  else
-  {
-    const std::vector<double> values = read_field(field_source, mesh.number_of_vertices());
-    for(auto v : mesh.vertices())
-      f0[Eigen::Index(diffusion.vertex_index(v))] = values[v.idx()];
-  }
-  const std::vector<Eigen::VectorXd> fields = diffusion.diffuse(f0, steps);
+  const Diffusion_setup setup = make_diffusion(mesh, o, input, timer);
+  const Diffusion& diffusion = *setup.diffusion;
+  const Eigen::VectorXd f0 = initial_field(o.field, mesh, diffusion);
+  const std::vector<Eigen::VectorXd> fields = diffuse_fields(diffusion, f0, o.steps, o, input);
   timer.stop("diffusion");
 
-  std::vector<double> initial(mesh.number_of_vertices());
-  for(auto v : mesh.vertices())
-    initial[v.idx()] = f0[Eigen::Index(diffusion.vertex_index(v))];
-  const double half_range = robust_half_range(initial);
-  Json_object heat;
-  for(std::size_t s = 0; s < steps.size(); ++s)
+  Json_object baseline;
+  std::vector<double> baseline_heat;
+  if(o.json && !args.flag("--no-baseline"))
   {
-    std::vector<double> values(mesh.number_of_vertices());
-    for(auto v : mesh.vertices())
-      values[v.idx()] = fields[s][Eigen::Index(diffusion.vertex_index(v))];
-    write_fields_ply(outputs[s], mesh, {{"field", values}}, half_range);
-    heat.number(std::to_string(steps[s]), fields[s].sum());
+    baseline_heat = global_total_heat(mesh, diffusion, f0, setup.kernel.get(), o, input, baseline);
+    timer.stop("global_baseline");
   }
+
+  // All outputs, or none: they are renamed into place together at the end.
+  const double half_range = robust_half_range(in_mesh_order(f0, mesh, diffusion));
+  Output_files files;
+  Json_object heat, global_heat, names;
+  for(std::size_t s = 0; s < o.steps.size(); ++s)
+  {
+    write_fields_ply(files, outputs[s], mesh, {{"field", in_mesh_order(fields[s], mesh, diffusion)}}, half_range);
+    heat.number(std::to_string(o.steps[s]), fields[s].sum());
+    if(!baseline_heat.empty())
+      global_heat.number(std::to_string(o.steps[s]), baseline_heat[s]);
+    names.string(std::to_string(o.steps[s]), outputs[s]);
+  }
+  files.commit();
   timer.stop("write");
 
   const HD::Heat_region_statistics& regions = diffusion.region_statistics();
-  if(!quiet)
+  const std::size_t coarse = setup.kernel ? setup.kernel->coarse_vertex_count() : 0;
+  note_automatic_coarse(o, mesh.number_of_vertices(), coarse);
+  if(!o.quiet)
   {
     std::cerr << input << ": " << mesh.number_of_vertices() << " vertices, heat regions of " << regions.min_size
-              << ".." << regions.max_size << " vertices (mean " << regions.mean_size << ")";
-    if(regions.collapsed_regions > 0)
-      std::cerr << "; " << regions.collapsed_regions
-                << (local ? " regions collapsed to their vertex (its edge weights isolate it)"
-                          : " regions collapsed to their vertex (the truncated kernel is too flat at this t)");
-    std::cerr << "\nwritten to " << prefix << "_k*.ply\n";
+              << ".." << regions.max_size << " vertices (mean " << regions.mean_size << ")\n";
+    warn_about_collapsed_regions(diffusion, o);
+    std::cerr << "written to " << prefix << "_k*.ply\n";
   }
-  if(args.flag("--json"))
+  if(o.json)
   {
-    Json_object region_json, files;
-    region_json.integer("min", (long long)regions.min_size)
-        .number("mean", regions.mean_size)
-        .integer("max", (long long)regions.max_size)
-        .integer("collapsed", (long long)regions.collapsed_regions)
-        .integer("capped", (long long)regions.capped_regions);
-    for(std::size_t s = 0; s < steps.size(); ++s)
-      files.string(std::to_string(steps[s]), outputs[s]);
     Json_object summary;
     summary.string("command", "diffuse")
         .string("input", input)
-        .string("field", field_source)
-        .object("outputs", files)
+        .string("field", o.field)
+        .object("outputs", names)
         .integer("vertices", (long long)mesh.number_of_vertices())
         .integer("faces", (long long)mesh.number_of_faces())
-        .integer("triangulated_faces", (long long)triangulated)
-        .number("sigma", sigma)
-        .number("time", time)
-        .string("kernel", kernel_name);
-    if(kernel)
+        .integer("triangulated_faces", (long long)triangulated);
+    add_diffusion_json(summary, o, mesh.number_of_vertices(), setup.kernel.get());
+    if(setup.kernel)
     {
-      const Eigen::VectorXd& lambda = kernel->eigenvalues();
-      summary.integer("eigenpairs", (long long)kernel->number_of_eigenpairs())
-          .boolean("scale_invariant", kernel->is_scale_invariant())
-          .number("lambda_min", lambda[0])
-          .number("lambda_max", lambda[lambda.size() - 1]);
+      const Eigen::VectorXd& lambda = setup.kernel->eigenvalues();
+      summary.number("lambda_min", lambda[0]).number("lambda_max", lambda[lambda.size() - 1]);
     }
-    summary        .object("heat_regions", region_json)
-        .object("total_heat", heat)
-        .object("timings_ms", timings_json(timer));
+    summary.object("heat_regions", heat_region_json(regions)).object("total_heat", heat);
+    if(!baseline_heat.empty())
+      summary.object("global_total_heat", global_heat).object("global_baseline", baseline);
+    summary.object("timings_ms", timings_json(timer));
     std::cout << summary.str() << std::endl;
   }
   return success;

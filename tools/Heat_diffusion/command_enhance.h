@@ -7,18 +7,15 @@
 #ifndef CGAL_HEAT_DIFFUSION_TOOLS_COMMAND_ENHANCE_H
 #define CGAL_HEAT_DIFFUSION_TOOLS_COMMAND_ENHANCE_H
 
-#include "command_features.h"
+#include "cli_support.h"
+#include "command_decompose.h"  // level_spec, parse_steps_per_level
+#include "diffusion_options.h"
 
 #include <CGAL/Heat_diffusion/decomposition.h>
 #include <CGAL/Heat_diffusion/normal_controlled_coordinates.h>
 
-#include <CGAL/boost/graph/IO/OBJ.h>
-#include <CGAL/boost/graph/IO/OFF.h>
-#include <CGAL/boost/graph/IO/PLY.h>
-#include <CGAL/boost/graph/IO/STL.h>
 #include <CGAL/Polygon_mesh_processing/bbox.h>
 
-#include <cctype>
 #include <cmath>
 #include <iomanip>
 #include <iostream>
@@ -28,7 +25,7 @@
 
 namespace heat_diffusion_cli {
 
-// Parses a comma-separated list of finite numbers ("1,3,3").
+// Parses a comma-separated list of finite numbers ("1,3,3"), at most 1000 of them.
 inline std::vector<double> parse_weights(const std::string& text)
 {
   std::vector<double> weights;
@@ -44,36 +41,12 @@ inline std::vector<double> parse_weights(const std::string& text)
   }
   if(weights.empty())
     throw Usage_error("--weights needs at least one weight");
+  if(weights.size() > 1000)
+    throw Usage_error("--weights takes at most 1000 weights (one per level)");
   return weights;
 }
 
-// The mesh format of an output path, from its extension.
-inline std::string mesh_format(const std::string& path)
-{
-  std::string extension = fs::path(path).extension().string();
-  for(char& ch : extension)
-    ch = char(std::tolower(static_cast<unsigned char>(ch)));
-  if(extension != ".off" && extension != ".obj" && extension != ".ply" && extension != ".stl")
-    throw Usage_error("the output " + path + " must end in .off, .obj, .ply or .stl");
-  return extension;
-}
-
-// Writes a mesh atomically, with 17 significant digits in the text formats.
-inline void write_mesh(const std::string& path, const Mesh& mesh)
-{
-  const std::string format = mesh_format(path);
-  write_atomically(path, [&](std::ostream& os) {
-    const auto np = CGAL::parameters::stream_precision(17);
-    if(format == ".off")
-      return CGAL::IO::write_OFF(os, mesh, np);
-    if(format == ".obj")
-      return CGAL::IO::write_OBJ(os, mesh, np);
-    if(format == ".ply")
-      return CGAL::IO::write_PLY(os, mesh, "written by CGAL Heat_diffusion", CGAL::parameters::use_binary_mode(true));
-    return CGAL::IO::write_STL(os, mesh, CGAL::parameters::use_binary_mode(true));
-  });
-}
-
+// The variance of the Normal Signature of `mesh`.
 inline double normal_signature_variance(const Mesh& mesh)
 {
   const HD::Normal_controlled_coordinates<Mesh> ncc(mesh);
@@ -88,91 +61,87 @@ inline double normal_signature_variance(const Mesh& mesh)
   return squares / n - (sum / n) * (sum / n);
 }
 
-const char* const enhance_help =
-    "Usage: heat_diffusion enhance MESH [--weights W1,W2,...] [--steps-per-level S] [--sigma S]\n"
-    "                              [--time T] [-m M] [--anchor-weight A] [-o OUT] [--json] [--quiet]\n"
-    "\n"
-    "Shape editing (the paper's Fig. 10): the Normal Signature is decomposed into L detail\n"
-    "bands D^1..D^L (finest first) and a residual S^L, as 'decompose' does; the signature\n"
-    "w_1 D^1 + ... + w_L D^L + S^L is rebuilt with the given weights, and the vertices are\n"
-    "moved to match it (least-squares reconstruction, eq. 23). The paper's enhancement filter\n"
-    "is 1,3,3 (the default), its smoothing filter 0,0,1; weights all 1 return the input.\n"
-    "\n"
-    "Options:\n"
-    "  --weights W,...     one weight per band, finest first; their number is L (default 1,3,3)\n"
-    "  --steps-per-level S diffusion steps of one level (default 5)\n"
-    "  --sigma S           edge-weight width (default 0.1)\n"
-    "  --time T            time of one step (default 1)\n"
-    "  -m M                number of eigenpairs (default 150)\n"
-    "  --anchor-weight A   weight of the positional anchors of the reconstruction (default 1);\n"
-    "                      smaller lets the shape move further\n"
-    "  -o OUT              the edited mesh, .off, .obj, .ply or .stl (default: MESH's name with\n"
-    "                      _enhanced.off, in the current folder)\n"
-    "  --json              print a JSON summary on stdout: the variance of the NS before and\n"
-    "                      after, the largest vertex displacement relative to the bounding-box\n"
-    "                      diagonal, and the time of each stage\n"
-    "  --quiet             print nothing but errors (and the JSON summary if asked for)\n"
-    "  -h, --help          this text\n";
+inline Diffusion_spec enhance_spec() { return level_spec(); }
+
+inline std::string enhance_help()
+{
+  return "Usage: heat_diffusion enhance MESH [--weights W1,W2,...] [-k S] [--sigma S] [--time T]\n"
+         "                              [--kernel spectral|local] [-m M] [--coarse N] [--scale-invariant]\n"
+         "                              [--anchor-weight A] [-o OUT] [--json] [--quiet]\n"
+         "\n"
+         "Shape editing (the paper's Fig. 10): the Normal Signature is decomposed into L detail\n"
+         "bands D^1..D^L (finest first) and a residual S^L, as 'decompose' does; the signature\n"
+         "w_1 D^1 + ... + w_L D^L + S^L is rebuilt with the given weights, and the vertices are\n"
+         "moved to match it (least-squares reconstruction, eq. 23). The paper's enhancement filter\n"
+         "is 1,3,3 (the default), its smoothing filter 0,0,1; weights all 1 return the input.\n"
+         "\n"
+         "Options:\n" +
+         help_option("--weights W,...", "one weight per band, finest first; their number is L (default 1,3,3)") +
+         diffusion_options_help(enhance_spec()) +
+         help_option("--anchor-weight A", "weight of the positional anchors of the reconstruction (default 1); "
+                                          "smaller lets the shape move further") +
+         help_option("-o OUT", "the edited mesh, .off, .obj, .ply or .stl (default: MESH's name with _enhanced.off, "
+                               "in the current folder)") +
+         help_option("--json", "print a JSON summary on stdout: the variance of the NS before and after, the largest "
+                               "vertex displacement relative to the bounding-box diagonal, the kernel and its coarse "
+                               "level, and the time of each stage") +
+         common_options_help();
+}
 
 inline int run_enhance(int argc, char** argv)
 {
-  Arguments args({"--json", "--quiet", "-h", "--help"},
-                 {"-o", "--sigma", "--time", "-m", "--weights", "--steps-per-level", "--anchor-weight"});
+  const Diffusion_spec spec = enhance_spec();
+  Arguments args = diffusion_arguments(spec, {}, {"--weights", "--steps-per-level", "--anchor-weight"});
   args.parse(argc, argv, 2);
   if(args.flag("-h") || args.flag("--help"))
   {
-    std::cout << enhance_help;
+    std::cout << enhance_help();
     return success;
   }
   if(args.positional().size() != 1)
     throw Usage_error("enhance takes exactly one MESH argument");
   const std::string input = args.positional()[0];
-  const Diffusion_options options = parse_diffusion_options(args);
+  const Diffusion_options o = parse_diffusion_options(args, spec);
   const std::vector<double> weights = parse_weights(args.value("--weights", "1,3,3"));
-  const double steps_per_level = parse_number("--steps-per-level", args.value("--steps-per-level", "5"), 1., false);
-  if(steps_per_level != std::floor(steps_per_level) || steps_per_level > 1000000)
-    throw Usage_error("--steps-per-level must be an integer between 1 and 1000000");
+  const std::size_t steps_per_level = parse_steps_per_level(args, o);
   const double anchor_weight = parse_number("--anchor-weight", args.value("--anchor-weight", "1"), 0., true);
   const std::string output = args.value("-o", default_output(input, "_enhanced.off"));
   mesh_format(output);
   check_output_path(output, {input});
-  const bool quiet = args.flag("--quiet");
 
   Stage_timer timer;
   Mesh mesh;
   read_triangle_mesh(input, mesh);
   timer.stop("read");
   const Mesh original = mesh;
-  const double input_variance = normal_signature_variance(mesh);
-  Progress_bar progress("eigen solve", !quiet && isatty(STDERR_FILENO));
-  try
-  {
-    HD::filter_shape(mesh, weights,
-                     HD::parameters::combine(HD::parameters::sigma(options.sigma), HD::parameters::time(options.time),
-                                             HD::parameters::number_of_eigenpairs(options.eigenpairs),
-                                             HD::parameters::steps_per_level(std::size_t(steps_per_level)),
-                                             HD::parameters::anchor_weight(anchor_weight),
-                                             HD::parameters::progress_callback(std::ref(progress))));
-  }
-  catch(const std::invalid_argument& e)
-  {
-    throw Input_error(input + ": " + e.what());
-  }
+  const double input_variance = for_input(input, [&] { return normal_signature_variance(mesh); });
+  timer.stop("ncc");
+  Progress_bar progress("eigen solve", !o.quiet);
+  for_input(input, [&] {
+    with_diffusion_parameters(o, progress, [&](const auto& np) {
+      HD::filter_shape(mesh, weights,
+                       HD::parameters::combine(np, HD::parameters::steps_per_level(steps_per_level),
+                                               HD::parameters::anchor_weight(anchor_weight)));
+    });
+  });
+  progress.finish();
   timer.stop("filter_shape");
+  // Measured before writing: a failure leaves no output.
+  const double output_variance = for_input(input, [&] { return normal_signature_variance(mesh); });
+  double displacement = 0;
+  for(auto v : mesh.vertices())
+    displacement = (std::max)(displacement, point_distance(mesh.point(v), original.point(v)));
+  const CGAL::Bbox_3 box = CGAL::Polygon_mesh_processing::bbox(original);
+  const double diagonal = std::hypot(box.xmax() - box.xmin(), box.ymax() - box.ymin(), box.zmax() - box.zmin());
+  const double relative_displacement = diagonal > 0 ? displacement / diagonal : 0.;
   write_mesh(output, mesh);
   timer.stop("write");
 
-  const double output_variance = normal_signature_variance(mesh);
-  double displacement = 0;
-  for(auto v : mesh.vertices())
-    displacement = (std::max)(displacement, std::sqrt(CGAL::squared_distance(mesh.point(v), original.point(v))));
-  const CGAL::Bbox_3 box = CGAL::Polygon_mesh_processing::bbox(original);
-  const double diagonal = std::sqrt(CGAL::square(box.xmax() - box.xmin()) + CGAL::square(box.ymax() - box.ymin()) +
-                                    CGAL::square(box.zmax() - box.zmin()));
-  if(!quiet)
+  note_automatic_coarse(o, mesh.number_of_vertices(), expected_coarse_vertex_count(o, mesh.number_of_vertices()));
+  if(!o.quiet)
     std::cerr << "NS variance " << input_variance << " -> " << output_variance << "; largest displacement "
-              << displacement / diagonal << " of the diagonal\nwritten to " << output << "\n";
-  if(args.flag("--json"))
+              << relative_displacement << " of the diagonal\nwritten to " << output << "\n";
+  if(o.json)
   {
     std::string weight_list = "[";
     for(std::size_t j = 0; j < weights.size(); ++j)
@@ -187,14 +156,12 @@ inline int run_enhance(int argc, char** argv)
         .string("output", output)
         .integer("vertices", (long long)mesh.number_of_vertices())
         .raw("weights", weight_list + "]")
-        .integer("steps_per_level", (long long)steps_per_level)
-        .number("sigma", options.sigma)
-        .number("time", options.time)
-        .integer("eigenpairs", (long long)options.eigenpairs)
-        .number("anchor_weight", anchor_weight)
+        .integer("steps_per_level", (long long)steps_per_level);
+    add_diffusion_json(summary, o, mesh.number_of_vertices(), nullptr);
+    summary.number("anchor_weight", anchor_weight)
         .number("ns_variance_before", input_variance)
         .number("ns_variance_after", output_variance)
-        .number("max_displacement_relative", displacement / diagonal)
+        .number("max_displacement_relative", relative_displacement)
         .object("timings_ms", timings_json(timer));
     std::cout << summary.str() << std::endl;
   }

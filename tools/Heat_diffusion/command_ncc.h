@@ -61,8 +61,7 @@ inline int run_ncc(int argc, char** argv)
   timer.stop("read");
 
   std::vector<double> ns(mesh.number_of_vertices());
-  try
-  {
+  for_input(input, [&] {
     auto compute = [&](const auto& np) {
       const HD::Normal_controlled_coordinates<Mesh> ncc(mesh, np);
       for(auto v : mesh.vertices())
@@ -72,11 +71,7 @@ inline int run_ncc(int argc, char** argv)
       compute(HD::parameters::vertex_normal_rule(HD::Polygon_mesh_processing_vertex_normals()));
     else
       compute(HD::parameters::vertex_normal_rule(HD::Area_weighted_vertex_normals()));
-  }
-  catch(const std::invalid_argument& e)
-  {
-    throw Input_error(input + ": " + e.what());
-  }
+  });
   timer.stop("ncc");
 
   write_fields_ply(output, mesh, {{"ns", ns}});

@@ -34,12 +34,17 @@ const char* const general_help =
     "  hks MESH       The heat kernel signature and its maxima (the paper's baseline)\n"
     "  decompose MESH Detail bands and residual of the NS (or a field), each band of sum 0\n"
     "  enhance MESH   Shape editing: reweighted NS detail bands, e.g. --weights 1,3,3\n"
-    "  denoise NOISY  Mesh denoising by diffusion of the NS (eq. 22-23), writes OFF or PLY\n"
+    "  denoise NOISY  Mesh denoising by diffusion of the NS (eq. 22-23), writes OFF, OBJ, PLY or STL\n"
+    "\n"
+    "The subcommands that diffuse (diffuse, features, hks, decompose, enhance, denoise) share\n"
+    "their options, with the same meaning and checks: --sigma S, --time T, --kernel spectral|local,\n"
+    "-m M (eigenpairs), --coarse N (coarse level of the eigen solve), -k (diffusion steps),\n"
+    "-o, --json, --quiet. A progress bar on stderr follows long work when stderr is a terminal.\n"
     "\n"
     "MESH is any file CGAL::IO::read_polygon_mesh reads (OFF, OBJ, PLY, STL, VTP, TS, ...);\n"
     "polygon faces are triangulated. Exit status: 0 success, 1 bad input (the message names\n"
-    "the file and the problem), 2 bad usage. Outputs are written atomically and never over\n"
-    "an input file.\n";
+    "the file and the problem), 2 bad usage (the message names the option). Outputs are written\n"
+    "atomically (all of a run's outputs, or none) and never over an input file.\n";
 
 } // namespace
 
