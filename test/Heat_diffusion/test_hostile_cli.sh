@@ -170,6 +170,18 @@ if grep -q ReserveShadowMemoryRange <<<"$out"; then  # AddressSanitizer needs th
 fi
 [ "$status" -eq 1 ] && [ $(($(date +%s) - start)) -lt 10 ] && pass || fail "huge_face_size.off: exit $status after $(($(date +%s) - start)) s: $out"
 
+# The same for PLY: a face list of 4e9 vertices (ASCII and binary) and 4e9 vertices
+# in a 150-byte file; CGAL's reader alone grew to 15 GB on the binary one and was killed.
+for ply in huge_face_size_ascii.ply huge_face_size_binary.ply huge_counts.ply; do
+  start=$(date +%s)
+  out=$("$tool" ncc "$corpus/$ply" -o x.ply 2>&1); status=$?
+  [ "$status" -eq 1 ] && [ $(($(date +%s) - start)) -lt 10 ] && grep -q "$ply: cannot read the PLY file: " <<<"$out" &&
+    pass || fail "$ply: exit $status after $(($(date +%s) - start)) s: $out"
+done
+# The check walks valid PLYs without complaint: the tool reads its own binary output.
+"$tool" ncc "$corpus/octahedron.off" -o own.ply --quiet && "$tool" ncc own.ply -o own_again.ply --quiet &&
+  pass || fail "the tool cannot read its own PLY output"
+
 # expect CODE PATTERN -- COMMAND...: exit status CODE and output matching PATTERN
 expect() {
   local code=$1 pattern=$2; shift 3

@@ -506,6 +506,165 @@ inline void check_off_stream(std::istream& is, std::uintmax_t size)
   }
 }
 
+// Checks a PLY stream of `size` bytes before CGAL's reader sees it, and throws
+// Input_error (the message names the element) where that reader would not fail
+// cleanly: element counts and list lengths larger than the file can hold. CGAL's
+// reader sizes a list from its declared length before reading it: a 150-byte file
+// declaring a face of 4e9 vertices made it allocate 16 GB and get killed. Walks the
+// body once, property by property (ASCII or binary, either byte order); anything it
+// does not understand is left to CGAL's reader, which rejects it cleanly.
+// Leaves `is` at an unspecified position.
+inline void check_ply_stream(std::istream& is, std::uintmax_t size)
+{
+  auto fail = [](const std::string& what) { throw Input_error("cannot read the PLY file: " + what); };
+  auto type_size = [](const std::string& type) -> std::size_t {
+    if(type == "char" || type == "int8" || type == "uchar" || type == "uint8")
+      return 1;
+    if(type == "short" || type == "int16" || type == "ushort" || type == "uint16")
+      return 2;
+    if(type == "int" || type == "int32" || type == "uint" || type == "uint32" || type == "float" || type == "float32")
+      return 4;
+    if(type == "double" || type == "float64")
+      return 8;
+    return 0;
+  };
+  struct Property
+  {
+    bool list;
+    std::string count_type, value_type, name;
+  };
+  struct Element
+  {
+    std::string name;
+    double count;
+    std::vector<Property> properties;
+  };
+  std::string line, format;
+  if(!std::getline(is, line) || line.compare(0, 3, "ply") != 0)
+    return;
+  std::vector<Element> elements;
+  bool header_ended = false;
+  while(!header_ended && std::getline(is, line))
+  {
+    std::istringstream words(line);
+    std::string keyword;
+    words >> keyword;
+    if(keyword == "format")
+      words >> format;
+    else if(keyword == "element")
+    {
+      Element e;
+      if(!(words >> e.name >> e.count) || !(e.count >= 0) || e.count != std::floor(e.count))
+        fail("the header line '" + line + "' has no valid element count");
+      elements.push_back(e);
+    }
+    else if(keyword == "property")
+    {
+      Property p{false, "", "", ""};
+      std::string type;
+      words >> type;
+      if(type == "list")
+      {
+        p.list = true;
+        words >> p.count_type >> p.value_type >> p.name;
+        if(type_size(p.count_type) == 0 || type_size(p.value_type) == 0)
+          return;
+      }
+      else
+      {
+        p.value_type = type;
+        words >> p.name;
+        if(type_size(type) == 0)
+          return;
+      }
+      if(elements.empty())
+        return;
+      elements.back().properties.push_back(p);
+    }
+    else if(keyword == "end_header")
+      header_ended = true;
+  }
+  const bool ascii = format == "ascii";
+  const bool big_endian = format == "binary_big_endian";
+  if(!header_ended || (!ascii && !big_endian && format != "binary_little_endian"))
+    return;
+  const std::streamoff body = is.tellg();
+  if(body < 0)
+    return;
+  const double remaining = double(size) - double(body);
+  // Reads a list length: a whole number from 0 to what the rest of the file can hold.
+  auto list_length = [&](const Element& e, double k, const Property& p, double bound) -> std::uintmax_t {
+    double x = 0;
+    if(ascii)
+    {
+      if(!(is >> x))
+        return std::uintmax_t(-1);  // truncated or garbage: CGAL's reader says so
+    }
+    else
+    {
+      const std::size_t bytes = type_size(p.count_type);
+      unsigned char b[8] = {0};
+      if(!is.read(reinterpret_cast<char*>(b), std::streamsize(bytes)))
+        return std::uintmax_t(-1);
+      std::uint64_t u = 0;
+      for(std::size_t i = 0; i < bytes; ++i)
+        u |= std::uint64_t(b[big_endian ? bytes - 1 - i : i]) << (8 * i);
+      const bool is_signed = p.count_type[0] != 'u';
+      if(is_signed && (u >> (8 * bytes - 1)) != 0)
+        x = -1;
+      else
+        x = double(u);
+    }
+    if(!(x >= 0) || x != std::floor(x) || x > bound)
+    {
+      std::ostringstream os;
+      os << "the " << e.name << " element " << std::size_t(k) << " has a list '" << p.name << "' of " << x
+         << " values, more than the file of " << size << " bytes holds";
+      fail(os.str());
+    }
+    return std::uintmax_t(x);
+  };
+  for(const Element& e : elements)
+  {
+    // Every element takes a byte at least (two characters in ASCII).
+    if(!e.properties.empty() && e.count > remaining / (ascii ? 2 : 1))
+    {
+      std::ostringstream os;
+      os << "the header declares " << e.count << " " << e.name << " elements, more than the file of " << size
+         << " bytes holds";
+      fail(os.str());
+    }
+    for(double k = 0; k < e.count; ++k)
+      for(const Property& p : e.properties)
+      {
+        if(!p.list)
+        {
+          if(ascii)
+          {
+            std::string word;
+            if(!(is >> word))
+              return;
+          }
+          else if(!is.ignore(std::streamsize(type_size(p.value_type))))
+            return;
+          continue;
+        }
+        const std::uintmax_t n = list_length(e, k, p, ascii ? remaining / 2 : remaining / double(type_size(p.value_type)));
+        if(n == std::uintmax_t(-1))
+          return;
+        if(ascii)
+        {
+          std::string word;
+          for(std::uintmax_t i = 0; i < n; ++i)
+            if(!(is >> word))
+              return;
+        }
+        else if(!is.ignore(std::streamsize(n * type_size(p.value_type))))
+          return;
+      }
+  }
+}
+
 // Reads any format CGAL::IO::read_polygon_mesh reads (OFF, OBJ, PLY, STL, VTP, GOCAD,
 // ...), repairing the polygon soup on the way, and triangulates polygon faces.
 // Returns the number of faces that were triangulated.
@@ -518,12 +677,15 @@ std::size_t read_triangle_mesh(const std::string& path, Mesh& mesh)
   std::string extension = fs::path(path).extension().string();
   std::transform(extension.begin(), extension.end(), extension.begin(),
                  [](unsigned char ch) { return char(std::tolower(ch)); });
-  if(extension == ".off")
+  if(extension == ".off" || extension == ".ply")
   {
     std::ifstream is(path, std::ios::binary);
     try
     {
-      check_off_stream(is, fs::file_size(path, ec));
+      if(extension == ".off")
+        check_off_stream(is, fs::file_size(path, ec));
+      else
+        check_ply_stream(is, fs::file_size(path, ec));
     }
     catch(const Input_error& e)
     {
