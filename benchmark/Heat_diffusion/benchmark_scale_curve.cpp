@@ -3,11 +3,14 @@
 //
 // The scale curve of the spectral path with its coarse level (paper, eq. 21): CGAL's
 // armadillo Loop-subdivided at benchmark time to about 100k, 400k and 1.6M vertices
-// (nothing is committed), then, for each size, the time from mesh to the NS diffused
-// by k = 10 steps, each stage's share, and the peak memory. Each size runs in a child
-// process so that its peak memory is its own.
+// (nothing is committed), then, for each size, the time from mesh to the features of
+// the NS diffused by k = 10 steps, each stage's share, and the peak memory. Each size
+// runs in a child process so that its peak memory is its own.
 //
-// Usage: benchmark_scale_curve [DATA_DIR] [--max-level L] [--coarse N] [--time T]
+// Usage: benchmark_scale_curve [DATA_DIR] [--min-level L] [--max-level L] [--coarse N] [--time T] [--order]
+//
+// --order also times one diffusion step (a 3-ring operator times a vector) in the
+// vertex order of the mesh and in that of the package (along a Hilbert curve).
 //
 // At the paper's t = 1 the truncated kernel's peak h_t(j, j) is about m / n, below the
 // threshold tau(1) = 0.005 once n exceeds 30000 or so: every heat region collapses and
@@ -18,6 +21,8 @@
 #include <CGAL/Heat_diffusion/Anisotropic_heat_diffusion.h>
 #include <CGAL/Heat_diffusion/Edge_weighted_heat_kernel.h>
 #include <CGAL/Polygon_mesh_processing/IO/polygon_mesh_io.h>
+#include <CGAL/Heat_diffusion/internal/parallel_for.h>
+#include <CGAL/Heat_diffusion/multiscale_features.h>
 #include <CGAL/Surface_mesh.h>
 #include <CGAL/subdivision_method_3.h>
 
@@ -25,10 +30,13 @@
 #include <sys/wait.h>
 #include <unistd.h>
 
+#include <algorithm>
 #include <chrono>
+#include <cmath>
 #include <cstdio>
 #include <cstdlib>
 #include <string>
+#include <vector>
 
 typedef CGAL::Exact_predicates_inexact_constructions_kernel K;
 typedef CGAL::Surface_mesh<K::Point_3> Mesh;
@@ -41,6 +49,13 @@ double seconds_since(std::chrono::steady_clock::time_point start)
   return std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
 }
 
+double cpu_seconds()
+{
+  rusage usage;
+  getrusage(RUSAGE_SELF, &usage);
+  return double(usage.ru_utime.tv_sec + usage.ru_stime.tv_sec) + 1e-6 * double(usage.ru_utime.tv_usec + usage.ru_stime.tv_usec);
+}
+
 double peak_memory_gib()
 {
   rusage usage;
@@ -48,8 +63,136 @@ double peak_memory_gib()
   return double(usage.ru_maxrss) / (1024. * 1024.);  // ru_maxrss is in KiB on Linux
 }
 
+// Seconds of one diffusion step next = A current (row-major, as the package does it),
+// best of 5 runs of 10 steps, sequential or parallel.
+double step_seconds(const Eigen::SparseMatrix<double, Eigen::RowMajor>& a, bool parallel)
+{
+  Eigen::VectorXd current = Eigen::VectorXd::Ones(a.rows()), next(a.rows());
+  double best = 1e300;
+  for(int run = 0; run < 5; ++run)
+  {
+    const auto start = std::chrono::steady_clock::now();
+    for(int k = 0; k < 10; ++k)
+    {
+      auto row = [&](std::size_t i) {
+        double sum = 0;
+        for(Eigen::SparseMatrix<double, Eigen::RowMajor>::InnerIterator it(a, Eigen::Index(i)); it; ++it)
+          sum += it.value() * current[it.index()];
+        next[Eigen::Index(i)] = sum;
+      };
+      if(parallel)
+        HD::internal::parallel_for(std::size_t(a.rows()), row);
+      else
+        for(std::size_t i = 0; i < std::size_t(a.rows()); ++i)
+          row(i);
+      current.swap(next);
+    }
+    best = (std::min)(best, seconds_since(start) / 10.);
+  }
+  return best;
+}
+
+// A column-stochastic operator with the sparsity of a real A_t of about 3 rings (the
+// regions of the local kernel at t = 1 have 55 vertices on average): column j spreads
+// the heat of v_j evenly over its 3-ring. Vertex i gets row number[i]. Row-major.
+Eigen::SparseMatrix<double, Eigen::RowMajor> three_ring_operator(const HD::internal::Indexed_mesh& mesh,
+                                                                 const std::vector<int>& number)
+{
+  const std::size_t n = mesh.number_of_vertices();
+  std::vector<std::vector<int> > rings(n);
+  std::vector<std::size_t> mark(n, 0);
+  std::vector<std::size_t> queue;
+  for(std::size_t j = 0; j < n; ++j)
+  {
+    queue.assign(1, j);
+    mark[j] = j + 1;
+    std::size_t begin = 0;
+    for(int depth = 0; depth < 3; ++depth)
+    {
+      const std::size_t end = queue.size();
+      for(std::size_t q = begin; q < end; ++q)
+        for(std::size_t k = mesh.fan_begin[queue[q]]; k < mesh.fan_begin[queue[q] + 1]; ++k)
+          if(mark[mesh.fan[k]] != j + 1)
+          {
+            mark[mesh.fan[k]] = j + 1;
+            queue.push_back(mesh.fan[k]);
+          }
+      begin = end;
+    }
+    for(std::size_t i : queue)
+      rings[j].push_back(number[i]);
+    std::sort(rings[j].begin(), rings[j].end());
+  }
+  // the rings are symmetric: row number[i] has the entries 1/|ring(j)| at number[j], j in ring(i)
+  std::vector<int> vertex_of(n);
+  for(std::size_t i = 0; i < n; ++i)
+    vertex_of[std::size_t(number[i])] = int(i);
+  std::size_t total = 0;
+  for(const auto& r : rings)
+    total += r.size();
+  Eigen::SparseMatrix<double, Eigen::RowMajor> a(static_cast<Eigen::Index>(n), static_cast<Eigen::Index>(n));
+  a.resizeNonZeros(Eigen::Index(total));
+  std::size_t position = 0;
+  for(std::size_t row = 0; row < n; ++row)
+  {
+    a.outerIndexPtr()[row] = int(position);
+    for(int column : rings[std::size_t(vertex_of[row])])
+    {
+      a.innerIndexPtr()[position] = column;
+      a.valuePtr()[position] = 1. / double(rings[std::size_t(vertex_of[std::size_t(column)])].size());
+      ++position;
+    }
+  }
+  a.outerIndexPtr()[n] = int(position);
+  return a;
+}
+
+// --order: one diffusion step in the vertex order of the mesh (Surface_mesh's own
+// indices) and in the order of the package (vertex_index(): along a Hilbert curve
+// from 100000 vertices on). At t = 1 the spectral A_t of these meshes is the identity
+// (every region collapses), so the step is timed on the 3-ring operator above.
+void measure_order(const Mesh& mesh, const HD::Edge_weighted_heat_kernel<Mesh>& kernel)
+{
+  const HD::internal::Indexed_mesh& indexed = kernel.normal_controlled_coordinates().indexed_mesh();
+  const std::size_t n = mesh.number_of_vertices();
+  std::vector<int> mesh_order(n), package_order(n);
+  for(auto v : mesh.vertices())
+    mesh_order[kernel.vertex_index(v)] = int(v.idx());
+  for(std::size_t i = 0; i < n; ++i)
+    package_order[i] = int(i);
+  // mean index distance between the ends of an edge
+  double mesh_distance = 0, package_distance = 0;
+  for(auto e : mesh.edges())
+  {
+    const std::size_t i = kernel.vertex_index(mesh.vertex(e, 0)), j = kernel.vertex_index(mesh.vertex(e, 1));
+    mesh_distance += std::abs(double(mesh_order[i]) - double(mesh_order[j]));
+    package_distance += std::abs(double(i) - double(j));
+  }
+  const double edges = double(mesh.number_of_edges());
+  double mesh_1, package_1, mesh_p, package_p;
+  long nonzeros;
+  {
+    const Eigen::SparseMatrix<double, Eigen::RowMajor> a = three_ring_operator(indexed, mesh_order);
+    nonzeros = long(a.nonZeros());
+    mesh_1 = step_seconds(a, false);
+    mesh_p = step_seconds(a, true);
+  }
+  {
+    const Eigen::SparseMatrix<double, Eigen::RowMajor> a = three_ring_operator(indexed, package_order);
+    package_1 = step_seconds(a, false);
+    package_p = step_seconds(a, true);
+  }
+  const double bytes = double(nonzeros) * 12. + double(n) * 8. * 2. + double(n + 1) * 4.;
+  std::printf("    order: 3-ring operator, %ld nonzeros (%.1f a row); mean |i - j| over edges: mesh %.0f, package %.0f\n"
+              "    one step, 1 thread: mesh order %.2f ms (%.1f GB/s), package order %.2f ms (%.1f GB/s): %.2fx\n"
+              "    one step, parallel: mesh order %.2f ms, package order %.2f ms: %.2fx\n",
+              nonzeros, double(nonzeros) / double(n), mesh_distance / edges, package_distance / edges, 1e3 * mesh_1,
+              bytes / mesh_1 * 1e-9, 1e3 * package_1, bytes / package_1 * 1e-9, mesh_1 / package_1, 1e3 * mesh_p,
+              1e3 * package_p, mesh_p / package_p);
+}
+
 // One row of the table: subdivide, then mesh -> kernel -> A_t -> F^10.
-void run_level(const std::string& path, int level, long coarse, double time)
+void run_level(const std::string& path, int level, long coarse, double time, bool order)
 {
   Mesh mesh;
   if(!CGAL::IO::read_polygon_mesh(path, mesh))
@@ -61,6 +204,7 @@ void run_level(const std::string& path, int level, long coarse, double time)
     CGAL::Subdivision_method_3::Loop_subdivision(mesh, CGAL::parameters::number_of_iterations(level));
 
   const auto start = std::chrono::steady_clock::now();
+  const double cpu_start = cpu_seconds();
   const auto np = HD::parameters::combine(HD::parameters::sigma(1.), HD::parameters::number_of_eigenpairs(150));
   const HD::Edge_weighted_heat_kernel<Mesh> kernel =
       coarse < 0 ? HD::Edge_weighted_heat_kernel<Mesh>(mesh, np)
@@ -70,21 +214,32 @@ void run_level(const std::string& path, int level, long coarse, double time)
   const HD::Anisotropic_heat_diffusion<Mesh> diffusion(kernel, time);
   const double operator_seconds = seconds_since(lap);
   lap = std::chrono::steady_clock::now();
-  Eigen::VectorXd f0(Eigen::Index(mesh.number_of_vertices()));
+  auto ns = mesh.add_property_map<Mesh::Vertex_index, double>("v:ns", 0.).first;
   for(auto v : mesh.vertices())
-    f0[Eigen::Index(kernel.vertex_index(v))] = kernel.normal_controlled_coordinates().normal_signature(v);
-  const Eigen::VectorXd f10 = diffusion.diffuse(f0, 10);
+    ns[v] = kernel.normal_controlled_coordinates().normal_signature(v);
+  const auto features = HD::detect_multiscale_features(diffusion, ns, std::vector<std::size_t>{10});
   const double diffusion_seconds = seconds_since(lap);
   const double total = seconds_since(start);
+  const double cpu = cpu_seconds() - cpu_start;
 
+  // heat drift of F^10 (not timed)
+  Eigen::VectorXd f0(Eigen::Index(mesh.number_of_vertices()));
+  for(auto v : mesh.vertices())
+    f0[Eigen::Index(kernel.vertex_index(v))] = ns[v];
+  const Eigen::VectorXd f10 = diffusion.diffuse(f0, 10);
   const HD::Heat_kernel_timings& t = kernel.timings();
   auto share = [&](double s) { return 100. * s / total; };
-  std::printf("%9zu %8zu %8.2f | %5.1f%% %5.1f%% %5.1f%% %5.1f%% %5.1f%% %5.1f%% %5.1f%% | %6.2f | %7.1f %6zu | %.2e\n",
-              mesh.number_of_vertices(), kernel.coarse_vertex_count(), total, share(t.normal_controlled_coordinates),
+  std::printf("%9zu %8zu %8.2f %7.1f | %5.1f%% %5.1f%% %5.1f%% %5.1f%% %5.1f%% %5.1f%% %5.1f%% | %6.2f | %8.2e | %7.1f %7zu | %.2e | %zu/%zu\n",
+              mesh.number_of_vertices(), kernel.coarse_vertex_count(), total, cpu, share(t.normal_controlled_coordinates),
               share(t.simplification), share(t.operators), share(t.eigen_solve), share(t.rayleigh_ritz),
               share(operator_seconds), share(diffusion_seconds), peak_memory_gib(),
+              total / double(mesh.number_of_vertices()),
               diffusion.region_statistics().mean_size, diffusion.region_statistics().collapsed_regions,
-              std::abs(f10.sum() - f0.sum()) / f0.cwiseAbs().sum());
+              std::abs(f10.sum() - f0.sum()) / f0.cwiseAbs().sum(), features[0].convex.size(),
+              features[0].concave.size());
+  std::fflush(stdout);
+  if(order)
+    measure_order(mesh, kernel);
   std::fflush(stdout);
 }
 
@@ -93,16 +248,21 @@ void run_level(const std::string& path, int level, long coarse, double time)
 int main(int argc, char* argv[])
 {
   std::string data = CGAL_HEAT_DIFFUSION_DATA_DIR;
-  int max_level = 3;
+  int min_level = 0, max_level = 3;
   long coarse = -1;  // automatic
   double time = 1.;
+  bool order = false;
   for(int i = 1; i < argc; ++i)
   {
     const std::string a = argv[i];
-    if(a == "--max-level" && i + 1 < argc)
+    if(a == "--min-level" && i + 1 < argc)
+      min_level = std::atoi(argv[++i]);
+    else if(a == "--max-level" && i + 1 < argc)
       max_level = std::atoi(argv[++i]);
     else if(a == "--coarse" && i + 1 < argc)
       coarse = std::atol(argv[++i]);
+    else if(a == "--order")
+      order = true;
     else if(a == "--time" && i + 1 < argc)
       time = std::atof(argv[++i]);
     else
@@ -110,17 +270,18 @@ int main(int argc, char* argv[])
   }
   const std::string path = data + "/armadillo.off";
   std::printf("Scale curve: armadillo Loop-subdivided; sigma = 1, m = 150, t = %g, NS diffused by k = 10 steps\n", time);
-  std::printf("coarse level: %s; stages as shares of the total (mesh in memory -> F^10)\n\n",
+  std::printf("coarse level: %s; stages as shares of the total (mesh in memory -> features of F^10)\n\n",
               coarse < 0 ? "automatic (above 100000 vertices: 20000)" : std::to_string(coarse).c_str());
-  std::printf("%9s %8s %8s | %6s %6s %6s %6s %6s %6s %6s | %6s | %7s %6s | %s\n", "vertices", "coarse", "total s",
-              "NCC", "simpl", "L,B", "eigen", "ritz", "A_t", "F^10", "GiB", "region", "coll.", "heat drift");
-  for(int level = 0; level <= max_level; ++level)
+  std::printf("%9s %8s %8s %7s | %6s %6s %6s %6s %6s %6s %6s | %6s | %8s | %7s %7s | %8s | %s\n", "vertices", "coarse",
+              "total s", "CPU s", "NCC", "simpl", "L,B", "eigen", "ritz", "A_t", "feat.", "GiB", "s/vertex", "region", "coll.",
+              "drift", "features");
+  for(int level = min_level; level <= max_level; ++level)
   {
     std::fflush(stdout);  // or the child would print the parent's buffer again
     const pid_t child = fork();
     if(child == 0)
     {
-      run_level(path, level, coarse, time);
+      run_level(path, level, coarse, time, order);
       std::_Exit(0);
     }
     int status = 0;
@@ -129,6 +290,9 @@ int main(int argc, char* argv[])
       std::printf("level %d failed (status %d)\n", level, status);
   }
   std::printf("\nGiB: peak resident memory of the process for that size (ru_maxrss), subdivision included.\n"
-              "Re-run: build/bin/benchmark_scale_curve [DATA_DIR] [--max-level L] [--coarse N] [--time T]\n");
+              "feat.: F^10 and its features (detect_multiscale_features, c = 0.8); features: convex/concave.\n"
+              "total s: wall clock, mesh in memory -> features; CPU s: user + system time of the process over the same span;\n"
+              "s/vertex: total s / vertices.\n"
+              "Re-run: build/bin/benchmark_scale_curve [DATA_DIR] [--min-level L] [--max-level L] [--coarse N] [--time T] [--order]\n");
   return 0;
 }

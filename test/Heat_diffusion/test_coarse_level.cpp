@@ -10,6 +10,7 @@
 
 #include <CGAL/Exact_predicates_inexact_constructions_kernel.h>
 #include <CGAL/Surface_mesh.h>
+#include <CGAL/subdivision_method_3.h>
 
 #include "test_support.h"
 
@@ -22,10 +23,65 @@ typedef Mesh::Vertex_index Vertex;
 typedef HD::Edge_weighted_heat_kernel<Mesh> Kernel;
 typedef HD::Anisotropic_heat_diffusion<Mesh> Diffusion;
 
+// Meshes of 100000 vertices and more are numbered along a Hilbert curve unless a
+// vertex index map is given: the renumbering must be invisible through vertex_index().
+void test_hilbert_numbering()
+{
+  Mesh mesh = test_support::load<Mesh>("fandisk.off");
+  CGAL::Subdivision_method_3::Loop_subdivision(mesh, CGAL::parameters::number_of_iterations(2));
+  CHECK(mesh.number_of_vertices() >= CGAL::Heat_diffusion::internal::spatial_order_threshold);
+  typedef HD::Normal_controlled_coordinates<Mesh> NCC;
+  const NCC renumbered(mesh);
+  const NCC given(mesh, CGAL::parameters::vertex_index_map(get(CGAL::vertex_index, mesh)));
+  const std::size_t n = mesh.number_of_vertices();
+  std::vector<unsigned char> seen(n, 0);
+  std::size_t moved = 0;
+  double edge_distance_mesh = 0, edge_distance_package = 0, ns_difference = 0, ns_largest = 0;
+  for(Vertex v : mesh.vertices())
+  {
+    const std::size_t i = renumbered.vertex_index(v);
+    CHECK(i < n && !seen[i]);
+    seen[i] = 1;
+    moved += i != std::size_t(v.idx()) ? 1 : 0;
+    CHECK(given.vertex_index(v) == std::size_t(v.idx()));
+    // the same up to the order of floating-point sums
+    ns_difference = (std::max)(ns_difference, std::abs(renumbered.normal_signature(v) - given.normal_signature(v)));
+    ns_largest = (std::max)(ns_largest, std::abs(given.normal_signature(v)));
+  }
+  CHECK(moved > n / 2);
+  CHECK_MESSAGE(ns_difference <= 1e-12 * ns_largest, "NS differ by " << ns_difference << " (largest " << ns_largest << ")");
+  for(auto e : mesh.edges())
+  {
+    const Vertex a = mesh.vertex(e, 0), b = mesh.vertex(e, 1);
+    edge_distance_mesh += std::abs(double(a.idx()) - double(b.idx()));
+    edge_distance_package +=
+        std::abs(double(renumbered.vertex_index(a)) - double(renumbered.vertex_index(b)));
+  }
+  std::cout << "Hilbert numbering of fandisk subdivided to " << n << " vertices: mean index distance along edges "
+            << edge_distance_mesh / double(mesh.number_of_edges()) << " -> "
+            << edge_distance_package / double(mesh.number_of_edges()) << std::endl;
+  CHECK(edge_distance_package < edge_distance_mesh / 10);
+  // the NCC operator, row and column by vertex_index()
+  const NCC::Sparse_matrix a = renumbered.operator_matrix(), b = given.operator_matrix();
+  CHECK(a.nonZeros() == b.nonZeros());
+  double difference = 0;
+  const double largest = b.coeffs().cwiseAbs().maxCoeff();
+  for(auto h : mesh.halfedges())
+  {
+    const Vertex u = mesh.source(h), v = mesh.target(h);
+    for(const Vertex w : {u, v})
+      difference = (std::max)(difference, std::abs(a.coeff(Eigen::Index(renumbered.vertex_index(u)),
+                                                             Eigen::Index(renumbered.vertex_index(w))) -
+                                                     b.coeff(Eigen::Index(u.idx()), Eigen::Index(w.idx()))));
+  }
+  CHECK_MESSAGE(difference <= 1e-12 * largest, "operator entries differ by " << difference << " (largest " << largest << ")");
+}
+
 int main()
 {
   try
   {
+    test_hilbert_numbering();
     const std::vector<std::size_t> steps = {1, 10, 40};
     // The bound on the relative L2 error of the diffused NS for a 5000-vertex coarse
     // level at t = 4 ln 10 / lambda_m, where the truncated kernel is valid: about twice

@@ -297,6 +297,57 @@ private:
     }
   };
 
+  // The same kernel from the factors of a coarse level, eigenvectors = P C: then
+  // psi_i = sum_a P(i, a) psi^c_a with psi^c = C exp(-rate t / 2) (coarse x m), and
+  // h_t(j, i) = sum_a P(i, a) (psi^c_a . psi_j). The fine vertices of a region share a
+  // few coarse vertices, whose dot products with psi_j are computed once per source:
+  // no n x m copy of the eigenvectors, and far fewer m-long dot products.
+  struct Coarse_spectral_columns
+  {
+    struct Workspace
+    {
+      Eigen::VectorXd psi_j;
+      mutable std::vector<double> dots;             // psi^c_a . psi_j, valid where stamp[a] == generation
+      mutable std::vector<std::size_t> stamp;
+      std::size_t generation = 0;
+    };
+    Eigen::Matrix<double, Eigen::Dynamic, Eigen::Dynamic, Eigen::RowMajor> psi;  // coarse x m
+    const Eigen::SparseMatrix<double, Eigen::RowMajor>* prolongation;
+    const Heat_kernel* kernel;
+    bool relative;
+
+    Workspace make_workspace() const
+    {
+      Workspace w;
+      w.psi_j.resize(psi.cols());
+      w.dots.assign(std::size_t(psi.rows()), 0.);
+      w.stamp.assign(std::size_t(psi.rows()), 0);
+      return w;
+    }
+    void prepare(std::size_t j, Workspace& w) const
+    {
+      w.psi_j.setZero();
+      for(Eigen::SparseMatrix<double, Eigen::RowMajor>::InnerIterator it(*prolongation, Eigen::Index(j)); it; ++it)
+        w.psi_j.noalias() += it.value() * psi.row(it.index()).transpose();
+      ++w.generation;
+    }
+    double operator()(std::size_t j, std::size_t i, const Workspace& w) const
+    {
+      double dot = 0;
+      for(Eigen::SparseMatrix<double, Eigen::RowMajor>::InnerIterator it(*prolongation, Eigen::Index(i)); it; ++it)
+      {
+        const std::size_t a = std::size_t(it.index());
+        if(w.stamp[a] != w.generation)
+        {
+          w.dots[a] = psi.row(it.index()).dot(w.psi_j);
+          w.stamp[a] = w.generation;
+        }
+        dot += it.value() * w.dots[a];
+      }
+      return relative ? kernel->beta(i, j) * dot : dot;
+    }
+  };
+
   // h_t(j, i) = h_t(i, j) from the column of v_j, computed on its patch by prepare().
   struct Local_columns
   {
@@ -315,12 +366,21 @@ private:
   {
     time_ = t;
     const Eigen::Index m = Eigen::Index(kernel_->number_of_eigenpairs());
-    Spectral_columns columns{kernel_->eigenvectors(), kernel_, kernel_->is_scale_invariant()};
-    for(Eigen::Index k = 0; k < m; ++k)
-      columns.psi.col(k) *= std::exp(-0.5 * kernel_->decay_rate(std::size_t(k)) * t);
     std::vector<std::size_t> order(number_of_vertices());
     for(std::size_t j = 0; j < order.size(); ++j)
       order[j] = j;
+    if(kernel_->coarse_eigenvectors().size() > 0)
+    {
+      Coarse_spectral_columns columns{kernel_->coarse_eigenvectors(), &kernel_->coarse_prolongation(), kernel_,
+                                      kernel_->is_scale_invariant()};
+      for(Eigen::Index k = 0; k < m; ++k)
+        columns.psi.col(k) *= std::exp(-0.5 * kernel_->decay_rate(std::size_t(k)) * t);
+      build_from_columns(columns, columns.relative, order);
+      return;
+    }
+    Spectral_columns columns{kernel_->eigenvectors(), kernel_, kernel_->is_scale_invariant()};
+    for(Eigen::Index k = 0; k < m; ++k)
+      columns.psi.col(k) *= std::exp(-0.5 * kernel_->decay_rate(std::size_t(k)) * t);
     build_from_columns(columns, columns.relative, order);
   }
 
@@ -381,11 +441,12 @@ private:
             }
           }
           // A region whose source value is not positive (possible only for a badly
-          // truncated kernel) keeps its heat: a column of the identity.
+          // truncated kernel), or whose total is not finite (a kernel overflowing at an
+          // extreme t), keeps its heat: a column of the identity, never NaN in A_t.
           double sum = 0;
           for(const auto& entry : column)
             sum += entry.second;
-          if(!(column.front().second > 0) || !(sum > 0))
+          if(!(column.front().second > 0) || !(sum > 0) || !std::isfinite(sum))
             column.assign(1, {j, 1.});
           else
             for(auto& entry : column)

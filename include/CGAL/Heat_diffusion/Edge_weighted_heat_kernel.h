@@ -61,7 +61,8 @@ struct Heat_kernel_timings
 ///
 /// <b>Coarse level (paper, eq. 21).</b> On large meshes the eigen solve dominates (and
 /// grows superlinearly). With `coarse_vertex_count(N)`, the mesh is simplified to about
-/// N vertices (Garland-Heckbert edge collapse), the NCC, \f$ L \f$, \f$ B \f$ and the eigenpairs
+/// N vertices (Garland-Heckbert edge collapse, after a faster first pass down to 4N
+/// vertices on larger meshes), the NCC, \f$ L \f$, \f$ B \f$ and the eigenpairs
 /// are computed there (rescaled to the fine mesh's vertex count, so t keeps its meaning),
 /// and each eigenvector is prolongated to the fine vertices with the barycentric
 /// coordinates of their closest points on the coarse mesh. A Rayleigh-Ritz step with
@@ -188,7 +189,7 @@ public:
           Eigen::Index((std::min)(requested_m, double(coarse_vertices_))), progress);
       used_dense_solver_ = pairs.dense_solver;
       timings_.eigen_solve = lap();
-      rayleigh_ritz_on_fine_mesh(level.prolongation * pairs.eigenvectors);
+      rayleigh_ritz_on_fine_mesh(level.prolongation, pairs.eigenvectors);
       timings_.rayleigh_ritz = lap();
     }
     number_of_components_ = count_components(mesh);
@@ -288,6 +289,12 @@ public:
   }
 
   /// \cond SKIP_IN_MANUAL
+  // With a coarse level, eigenvectors() = coarse_prolongation() * coarse_eigenvectors()
+  // (fine x coarse, three entries a row, times coarse x m): Anisotropic_heat_diffusion
+  // evaluates the kernel from these factors. Empty without a coarse level.
+  const Eigen::SparseMatrix<double, Eigen::RowMajor>& coarse_prolongation() const { return coarse_prolongation_; }
+  const Eigen::MatrixXd& coarse_eigenvectors() const { return coarse_eigenvectors_; }
+
   double beta(std::size_t i, std::size_t j) const
   {
     return 0.5 * (operators_.mass.coeff(Eigen::Index(i), Eigen::Index(i)) +
@@ -310,21 +317,17 @@ private:
   // graph Laplacian depends on the triangle shapes, which simplification changes).
   // Rayleigh-Ritz with the fine L and B on that subspace gives the best pairs it
   // contains for the fine operator: Ritz values, and vectors that are exactly
-  // B-orthonormal on the fine mesh. The projections are accumulated in blocks of
-  // columns, so no second n x m matrix is needed.
-  void rayleigh_ritz_on_fine_mesh(Eigen::MatrixXd basis)
+  // B-orthonormal on the fine mesh. With the basis P Phi_c (P the prolongation), the
+  // projections Phi_c^T (P^T L P) Phi_c are computed through the sparse Galerkin
+  // products P^T L P and P^T B P on the coarse level: O(n) sparse work instead of
+  // O(n m^2) dense work, and the one n x m matrix formed is the result P (Phi_c Y).
+  void rayleigh_ritz_on_fine_mesh(const Eigen::SparseMatrix<double>& prolongation, const Eigen::MatrixXd& coarse_vectors)
   {
-    const Eigen::Index m = basis.cols();
-    Eigen::MatrixXd projected_stiffness(m, m), projected_mass(m, m);
-    const Eigen::Index block = 16;
-    for(Eigen::Index first = 0; first < m; first += block)
-    {
-      const Eigen::Index width = (std::min)(block, m - first);
-      const Eigen::MatrixXd l_block = operators_.stiffness * basis.middleCols(first, width);
-      projected_stiffness.middleCols(first, width) = basis.transpose() * l_block;
-      const Eigen::MatrixXd b_block = operators_.mass * basis.middleCols(first, width);
-      projected_mass.middleCols(first, width) = basis.transpose() * b_block;
-    }
+    const Eigen::SparseMatrix<double> transposed = prolongation.transpose();
+    Eigen::SparseMatrix<double> galerkin = transposed * (operators_.stiffness * prolongation);
+    Eigen::MatrixXd projected_stiffness = coarse_vectors.transpose() * (galerkin * coarse_vectors);
+    galerkin = transposed * (operators_.mass * prolongation);
+    Eigen::MatrixXd projected_mass = coarse_vectors.transpose() * (galerkin * coarse_vectors);
     // symmetrise the rounding
     projected_stiffness = 0.5 * (projected_stiffness + projected_stiffness.transpose()).eval();
     projected_mass = 0.5 * (projected_mass + projected_mass.transpose()).eval();
@@ -333,15 +336,11 @@ private:
       throw std::runtime_error("CGAL::Heat_diffusion: the Rayleigh-Ritz step of the coarse level failed "
                                "(the prolongated eigenvectors are linearly dependent)");
     eigenvalues_ = ritz.eigenvalues();
-    // basis * Y, a block of rows at a time, in place
-    const Eigen::MatrixXd& y = ritz.eigenvectors();
-    for(Eigen::Index first = 0; first < basis.rows(); first += 4096)
-    {
-      const Eigen::Index height = (std::min)(Eigen::Index(4096), basis.rows() - first);
-      const Eigen::MatrixXd rows = basis.middleRows(first, height) * y;
-      basis.middleRows(first, height) = rows;
-    }
-    eigenvectors_ = std::move(basis);
+    coarse_eigenvectors_ = coarse_vectors * ritz.eigenvectors();
+    // Row-major: the product below then runs column by column, streaming.
+    coarse_prolongation_ = prolongation;
+    eigenvectors_.resize(prolongation.rows(), coarse_eigenvectors_.cols());
+    eigenvectors_.noalias() = coarse_prolongation_ * coarse_eigenvectors_;
   }
 
   static std::size_t count_components(const internal::Indexed_mesh& mesh)
@@ -378,6 +377,8 @@ private:
   internal::Heat_operators operators_;
   Eigen::VectorXd eigenvalues_;
   Eigen::MatrixXd eigenvectors_;
+  Eigen::SparseMatrix<double, Eigen::RowMajor> coarse_prolongation_;  // coarse level: P, n x c
+  Eigen::MatrixXd coarse_eigenvectors_;  // coarse level: eigenvectors_ = P coarse_eigenvectors_
   double sigma_ = 0.1;
   double first_nonzero_eigenvalue_ = 1.;
   std::size_t number_of_components_ = 1;

@@ -16,8 +16,15 @@
 #include <CGAL/Surface_mesh_simplification/Policies/Edge_collapse/GarlandHeckbert_plane_policies.h>
 #include <CGAL/Surface_mesh_simplification/edge_collapse.h>
 
+#include <CGAL/Heat_diffusion/internal/parallel_for.h>
+#include <CGAL/boost/graph/Euler_operations.h>
+
 #include <Eigen/Sparse>
 
+#include <algorithm>
+#include <array>
+#include <limits>
+#include <utility>
 #include <vector>
 
 namespace CGAL {
@@ -34,9 +41,155 @@ struct Coarse_level
   Eigen::SparseMatrix<double> prolongation; // fine vertices x coarse vertices, rows sum to 1
 };
 
+// Meshes of more than prepass_factor times the coarse vertex count are first brought
+// to that size by the fast `decimate_by_rounds()`, then by Garland-Heckbert edge collapse.
+#ifndef CGAL_HEAT_DIFFUSION_COARSE_PREPASS_FACTOR
+#define CGAL_HEAT_DIFFUSION_COARSE_PREPASS_FACTOR 4
+#endif
+constexpr std::size_t prepass_factor = CGAL_HEAT_DIFFUSION_COARSE_PREPASS_FACTOR;
+
+// The first, fast stage of the simplification of a large mesh: rounds of
+// multiple-choice half-edge collapses (after Wu and Kobbelt, "Fast mesh decimation by
+// multiple-choice techniques", 2002), with Garland-Heckbert plane quadrics as the
+// cost. In each round every vertex u proposes its cheapest collapse u -> v onto a
+// neighbour v, the proposals are sorted by cost and the cheaper half of them are
+// applied greedily, skipping those whose cost a collapse of the same round has made
+// stale; each round removes about a quarter of the vertices. There is no priority
+// queue and no update of the costs of the two-ring after each collapse, which is
+// where `Surface_mesh_simplification::edge_collapse()` spends its time, whatever the
+// cost policy. Every kept vertex keeps its position on the input surface. A collapse
+// is skipped when it violates the link condition, is an edge of a tetrahedron, moves a
+// border vertex off the border, turns a face by more than 60 degrees or nearly
+// flattens it.
+template <typename Mesh>
+void decimate_by_rounds(Mesh& mesh, std::size_t target_vertices)
+{
+  typedef typename boost::graph_traits<Mesh>::vertex_descriptor Vertex;
+  typedef typename boost::graph_traits<Mesh>::halfedge_descriptor Halfedge;
+  typedef std::array<double, 10> Quadric;  // upper triangle of a symmetric 4 x 4 matrix
+  auto point = [&](Vertex v) {
+    const auto& p = mesh.point(v);
+    return Eigen::Vector3d(p.x(), p.y(), p.z());
+  };
+  auto add_plane = [](Quadric& q, const Eigen::Vector3d& n, double d, double w) {
+    const double a[4] = {n.x(), n.y(), n.z(), d};
+    int k = 0;
+    for(int r = 0; r < 4; ++r)
+      for(int c = r; c < 4; ++c)
+        q[std::size_t(k++)] += w * a[r] * a[c];
+  };
+  auto error = [](const Quadric& q1, const Quadric& q2, const Eigen::Vector3d& x) {
+    const double a[4] = {x.x(), x.y(), x.z(), 1.};
+    double e = 0;
+    int k = 0;
+    for(int r = 0; r < 4; ++r)
+      for(int c = r; c < 4; ++c, ++k)
+        e += (r == c ? 1. : 2.) * (q1[std::size_t(k)] + q2[std::size_t(k)]) * a[r] * a[c];
+    return e;
+  };
+
+  auto quadrics = mesh.template add_property_map<Vertex, Quadric>("v:hd_quadric", Quadric{}).first;
+  auto stamp = mesh.template add_property_map<Vertex, std::size_t>("v:hd_stamp", 0).first;
+  for(auto f : faces(mesh))
+  {
+    const Halfedge h = halfedge(f, mesh);
+    const Vertex v[3] = {source(h, mesh), target(h, mesh), target(next(h, mesh), mesh)};
+    const Eigen::Vector3d p0 = point(v[0]);
+    const Eigen::Vector3d cross = (point(v[1]) - p0).cross(point(v[2]) - p0);
+    const double norm = cross.norm();
+    if(!(norm > 0))
+      continue;
+    const Eigen::Vector3d n = cross / norm;
+    for(const Vertex u : v)  // weighted by the face area
+      add_plane(quadrics[u], n, -n.dot(p0), 0.5 * norm);
+  }
+
+  // u -> v (the source of h goes to its target): allowed?
+  auto is_valid = [&](Halfedge h) {
+    const Vertex u = source(h, mesh), v = target(h, mesh);
+    if(is_border(u, mesh) && !is_border(edge(h, mesh), mesh))
+      return false;
+    if(CGAL::is_tetrahedron(h, mesh) || !CGAL::Euler::does_satisfy_link_condition(edge(h, mesh), mesh))
+      return false;
+    const Eigen::Vector3d pu = point(u), pv = point(v);
+    for(Halfedge g : halfedges_around_target(u, mesh))  // g: a -> u
+    {
+      if(is_border(g, mesh))
+        continue;
+      const Vertex a = source(g, mesh), b = target(next(g, mesh), mesh);  // face (a, u, b)
+      if(a == v || b == v)
+        continue;  // removed with the edge
+      const Eigen::Vector3d pa = point(a), pb = point(b);
+      const Eigen::Vector3d before = (pu - pa).cross(pb - pa), after = (pv - pa).cross(pb - pa);
+      const double dot = before.dot(after);
+      if(!(dot > 0.5 * before.norm() * after.norm()) || !(after.squaredNorm() > 1e-6 * before.squaredNorm()))
+        return false;
+    }
+    return true;
+  };
+
+  std::size_t live = static_cast<std::size_t>(num_vertices(mesh));
+  std::vector<std::pair<double, Halfedge> > proposals;
+  for(std::size_t round = 1; live > target_vertices; ++round)
+  {
+    // Removed elements are only flagged: compact once they outnumber the live ones,
+    // so that a round costs O(live vertices).
+    if(mesh.number_of_removed_vertices() > live)
+      mesh.collect_garbage();
+    proposals.clear();
+    for(Vertex u : vertices(mesh))
+    {
+      double best = std::numeric_limits<double>::infinity();
+      Halfedge best_h;
+      const Eigen::Vector3d pu = point(u);
+      for(Halfedge g : halfedges_around_source(u, mesh))  // g: u -> v
+      {
+        const Vertex v = target(g, mesh);
+        const double cost = error(quadrics[u], quadrics[v], point(v)) + 1e-12 * (point(v) - pu).squaredNorm();
+        if(cost < best)
+        {
+          best = cost;
+          best_h = g;
+        }
+      }
+      if(best < std::numeric_limits<double>::infinity())
+        proposals.emplace_back(best, best_h);
+    }
+    std::sort(proposals.begin(), proposals.end(),
+              [](const std::pair<double, Halfedge>& a, const std::pair<double, Halfedge>& b) { return a.first < b.first; });
+    const std::size_t considered = (proposals.size() + 1) / 2;
+    std::size_t collapsed = 0;
+    for(std::size_t k = 0; k < considered && live > target_vertices; ++k)
+    {
+      const Halfedge h = proposals[k].second;
+      if(mesh.is_removed(h))
+        continue;
+      const Vertex u = source(h, mesh), v = target(h, mesh);
+      if(stamp[u] == round || stamp[v] == round || !is_valid(h))
+        continue;
+      const auto position = mesh.point(v);
+      Quadric q = quadrics[u];
+      for(std::size_t i = 0; i < q.size(); ++i)
+        q[i] += quadrics[v][i];
+      const Vertex kept = CGAL::Euler::collapse_edge(edge(h, mesh), mesh);
+      mesh.point(kept) = position;
+      quadrics[kept] = q;
+      stamp[kept] = round;  // its quadric changed: its proposals wait for the next round
+      --live;
+      ++collapsed;
+    }
+    if(collapsed == 0)
+      break;
+  }
+  mesh.remove_property_map(quadrics);
+  mesh.remove_property_map(stamp);
+  mesh.collect_garbage();
+}
+
 // Simplifies `fine` to about `target_vertices` vertices by Garland-Heckbert edge
 // collapse (plane quadrics), which keeps the sharp creases that the anisotropic
-// kernel is about, and builds the prolongation.
+// kernel is about, and builds the prolongation. Meshes of more than four times the
+// target first go down to four times the target by `decimate_by_rounds()`.
 inline Coarse_level make_coarse_level(const Indexed_mesh& fine, std::size_t target_vertices)
 {
   typedef CGAL::Exact_predicates_inexact_constructions_kernel K;
@@ -53,9 +206,14 @@ inline Coarse_level make_coarse_level(const Indexed_mesh& fine, std::size_t targ
   for(const auto& t : fine.triangles)
     if(mesh.add_face(ids[t[0]], ids[t[1]], ids[t[2]]) == Mesh::null_face())
       throw_invalid_input("coarse level: the mesh cannot be copied for simplification");
+  std::vector<Vertex>().swap(ids);
+
+  if(fine.number_of_vertices() > prepass_factor * target_vertices)
+    decimate_by_rounds(mesh, prepass_factor * target_vertices);
 
   // An edge collapse removes one vertex and (Euler, closed or not) about three edges.
-  const std::size_t removed = fine.number_of_vertices() > target_vertices ? fine.number_of_vertices() - target_vertices : 0;
+  const std::size_t current = mesh.number_of_vertices();
+  const std::size_t removed = current > target_vertices ? current - target_vertices : 0;
   const std::size_t target_edges = mesh.number_of_edges() > 3 * removed ? mesh.number_of_edges() - 3 * removed : 3;
   SMS::Count_stop_predicate<Mesh> stop(target_edges);
   SMS::GarlandHeckbert_plane_policies<Mesh, K> policies(mesh);
@@ -72,10 +230,9 @@ inline Coarse_level make_coarse_level(const Indexed_mesh& fine, std::size_t targ
   typedef CGAL::AABB_tree<CGAL::AABB_traits<K, Primitive> > Tree;
   Tree tree;
   PMP::build_AABB_tree(mesh, tree);
-  std::vector<Eigen::Triplet<double> > entries;
-  entries.reserve(3 * fine.number_of_vertices());
-  for(std::size_t i = 0; i < fine.number_of_vertices(); ++i)
-  {
+  tree.accelerate_distance_queries();  // built now: the queries below run in parallel
+  std::vector<Eigen::Triplet<double> > entries(3 * fine.number_of_vertices());
+  parallel_for(fine.number_of_vertices(), [&](std::size_t i) {
     const Eigen::Vector3d& p = fine.points[i];
     const auto location = PMP::locate_with_AABB_tree(K::Point_3(p.x(), p.y(), p.z()), tree, mesh);
     const auto h = halfedge(location.first, mesh);
@@ -85,8 +242,9 @@ inline Coarse_level make_coarse_level(const Indexed_mesh& fine, std::size_t targ
     for(int k = 0; k < 3; ++k)
       sum += (w[k] = (std::max)(0., double(location.second[k])));
     for(int k = 0; k < 3; ++k)
-      entries.emplace_back(int(i), int(corners[k].idx()), sum > 0 ? w[k] / sum : 1. / 3.);
-  }
+      entries[3 * i + std::size_t(k)] =
+          Eigen::Triplet<double>(int(i), int(corners[k].idx()), sum > 0 ? w[k] / sum : 1. / 3.);
+  });
   level.prolongation.resize(Eigen::Index(fine.number_of_vertices()), Eigen::Index(level.mesh.number_of_vertices()));
   level.prolongation.setFromTriplets(entries.begin(), entries.end());
   return level;
