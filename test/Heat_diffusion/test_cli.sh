@@ -135,11 +135,11 @@ expect 0 'Usage: heat_diffusion enhance' -- "$tool" enhance --help
 "$tool" denoise "$data/elephant.off" -o denoised.off --json --quiet > denoise.json &&
   python3 -c '
 import json; d = json.load(open("denoise.json"))
-assert d["vertices"] == 2775 and d["iterations"] == 2, d
+assert d["vertices"] == 2775 and d["method"] == "normal_filtering" and d["max_iterations"] == 100, d
 assert 0 < d["displacement_in_mean_edge_lengths"]["mean"] < 1, d
 assert all(v >= 0 for v in d["timings_ms"].values()) and "denoise" in d["timings_ms"], d' &&
   [ "$(sed -n 2p denoised.off | cut -d" " -f1)" = 2775 ] && pass || fail "denoise OFF output or JSON"
-expect 0 'written to denoised.ply' -- "$tool" denoise "$data/elephant.off" -o denoised.ply --iterations 1 -m 60
+expect 0 'written to denoised.ply' -- "$tool" denoise "$data/elephant.off" -o denoised.ply --method signature_diffusion --iterations 1 -m 60
 head -c 300 denoised.ply | grep -aq "element vertex 2775" && pass || fail "denoise PLY output"
 expect 0 'written to elephant_denoised.off' -- "$tool" denoise "$data/elephant.off" --iterations 0
 python3 -c '
@@ -151,8 +151,17 @@ def vertices(path):
 a, b = vertices("elephant_denoised.off"), vertices(sys.argv[1])
 assert len(a) == len(b) == 3 * 2775 and max(abs(x - y) for x, y in zip(a, b)) < 1e-12' "$data/elephant.off" &&
   pass || fail "denoise with 0 iterations changed the vertices"
-expect 2 '--sigma must be a number > 0' -- "$tool" denoise "$data/elephant.off" --sigma 0
-expect 2 '--anchor-weight must be a number > 0' -- "$tool" denoise "$data/elephant.off" --anchor-weight -1
+expect 2 '--sigma must be a number > 0' -- "$tool" denoise "$data/elephant.off" --method signature_diffusion --sigma 0
+expect 2 '--anchor-weight must be a number > 0' -- "$tool" denoise "$data/elephant.off" --method signature_diffusion --anchor-weight -1
+# the two methods, and the options of one refused with the other
+expect 2 '--method must be normal_filtering or signature_diffusion' -- "$tool" denoise "$data/elephant.off" --method bilateral
+expect 2 '--sigma applies to --method signature_diffusion only' -- "$tool" denoise "$data/elephant.off" --sigma 1
+expect 2 '--kernel applies to --method signature_diffusion only' -- "$tool" denoise "$data/elephant.off" --kernel local
+expect 2 '--normal-sigma applies to --method normal_filtering only' -- "$tool" denoise "$data/elephant.off" --method signature_diffusion --normal-sigma 0.5
+expect 2 '--normal-sigma must be a number > 0' -- "$tool" denoise "$data/elephant.off" --normal-sigma 0
+expect 2 '--displacement-limit must be a number > 0' -- "$tool" denoise "$data/elephant.off" --displacement-limit nan
+expect 0 'normal_filtering, vertices moved' -- "$tool" denoise "$data/elephant.off" -o nf.off --normal-sigma 0.5 --displacement-limit 0.8
+expect 0 'signature_diffusion, vertices moved' -- "$tool" denoise "$data/elephant.off" -o sd_local.off --method signature_diffusion --kernel local --iterations 1
 expect 2 '--iterations must be a whole number' -- "$tool" denoise "$data/elephant.off" --iterations 1.5
 expect 2 'must end in .off, .obj, .ply or .stl' -- "$tool" denoise "$data/elephant.off" -o out.vtp
 expect 2 'exactly one NOISY' -- "$tool" denoise
@@ -170,10 +179,12 @@ for c in diffuse features hks decompose enhance denoise; do
   for opt in '--sigma S' '--time T' '--kernel K' '-m M' '--coarse N' '-o ' '--json' '--quiet' 'A progress bar'; do
     grep -qF -- "$opt" <<<"$help" && pass || fail "$c --help lacks '$opt'"
   done
-  expect 2 "--kernel must be 'spectral' or 'local', not 'magic'" -- "$tool" "$c" "$data/elephant.off" --kernel magic
-  expect 2 "-m must be a whole number from 1 to 1000000, not '1e30'" -- "$tool" "$c" "$data/elephant.off" -m 1e30
-  expect 2 "--sigma must be a number > 0 or 'inf'" -- "$tool" "$c" "$data/elephant.off" --sigma -inf
-  expect 2 '--coarse' -- "$tool" "$c" "$data/elephant.off" --coarse 1e30
+  # denoise takes them with its signature_diffusion method
+  method=(); [ "$c" = denoise ] && method=(--method signature_diffusion)
+  expect 2 "--kernel must be 'spectral' or 'local', not 'magic'" -- "$tool" "$c" "$data/elephant.off" "${method[@]}" --kernel magic
+  expect 2 "-m must be a whole number from 1 to 1000000, not '1e30'" -- "$tool" "$c" "$data/elephant.off" "${method[@]}" -m 1e30
+  expect 2 "--sigma must be a number > 0 or 'inf'" -- "$tool" "$c" "$data/elephant.off" "${method[@]}" --sigma -inf
+  expect 2 '--coarse' -- "$tool" "$c" "$data/elephant.off" "${method[@]}" --coarse 1e30
 done
 # --coarse N: the size used and whether it was automatic, in --json; heat still conserved
 "$tool" diffuse "$data/fandisk.off" -m 40 --coarse 2000 -k 0,10 -o coarse --json --quiet > coarse.json &&
@@ -186,7 +197,6 @@ expect 0 '"coarse": \{"vertex_count": 0, "automatic": true\}' -- "$tool" diffuse
 expect 0 '"coarse": \{"vertex_count": (49[0-9]|50[0-9]), "automatic": false\}' -- "$tool" hks "$data/elephant.off" -m 20 --coarse 500 -o c.ply --json --quiet
 expect 2 "--coarse must be 0 \(no coarse level\) or at least 4, not '2'" -- "$tool" diffuse "$data/elephant.off" --coarse 2
 expect 2 "--coarse must be a whole number from 0 to 1000000000, not '-1'" -- "$tool" features "$data/elephant.off" --coarse -1
-expect 2 '--coarse: denoise_mesh\(\) does not take' -- "$tool" denoise "$data/elephant.off" --coarse 100
 # the global isotropic baseline of the paper's Fig. 5 next to the total heat, for the same k
 if python3 -c '
 import json, math; d = json.load(open("diffuse.json")); h, g = d["total_heat"], d["global_total_heat"]
@@ -210,7 +220,6 @@ expect 2 '-m is the number of eigenpairs of the spectral kernel: --kernel local 
 expect 2 '--coarse is the coarse level of the eigen solve: --kernel local computes none' -- "$tool" features "$data/elephant.off" --kernel local --coarse 100
 expect 2 '--scale-invariant needs the eigenvalues' -- "$tool" decompose "$data/elephant.off" --kernel local --scale-invariant
 expect 2 '--kernel local: the heat kernel signature is a sum over the eigenpairs' -- "$tool" hks "$data/elephant.off" --kernel local
-expect 2 '--kernel local: denoise_mesh\(\) uses the spectral kernel only' -- "$tool" denoise "$data/elephant.off" --kernel local
 # -k is the number of diffusion steps everywhere: the scales (diffuse, features), the steps
 # of one level (decompose, enhance; also --steps-per-level), the steps per iteration (denoise)
 expect 0 '"steps_per_level": 2' -- "$tool" decompose "$data/elephant.off" -m 20 -k 2 --levels 2 -o deck --json --quiet

@@ -1,9 +1,12 @@
 // Copyright (c) 2026 The CGAL Heat_diffusion developers.
 // SPDX-License-Identifier: LGPL-3.0-or-later
 //
-// Tests of denoise_mesh(): quality on noisy fandisk against CGAL's smooth_shape,
-// validity of the result (no self-intersection, same vertices, finite), agreement
-// across kernels and mesh types, scale invariance, and parameter checking.
+// Tests of denoise_mesh(): quality on noisy fandisk against CGAL's smooth_shape and
+// bilateral mesh denoising (Fleishman et al. 2003), and the target (MAD below
+// 3.5 degrees at 0.3 mean edge length of noise); validity of the result (no
+// self-intersection, same vertices, finite); the displacement limit; agreement across
+// kernels and mesh types and scale invariance, for both denoising methods; parameter
+// checking.
 
 #include <CGAL/Exact_predicates_exact_constructions_kernel.h>
 #include <CGAL/Exact_predicates_inexact_constructions_kernel.h>
@@ -12,6 +15,7 @@
 #include <CGAL/Surface_mesh.h>
 
 #include <CGAL/Heat_diffusion/denoising.h>
+#include <CGAL/Polygon_mesh_processing/compute_normal.h>
 #include <CGAL/Polygon_mesh_processing/self_intersections.h>
 #include <CGAL/Polygon_mesh_processing/smooth_shape.h>
 #include <CGAL/boost/graph/copy_face_graph.h>
@@ -20,6 +24,7 @@
 
 #include <algorithm>
 #include <cmath>
+#include <functional>
 #include <iostream>
 #include <limits>
 #include <sstream>
@@ -81,9 +86,78 @@ double best_smooth_shape(const Mesh& clean, const Mesh& noisy, std::string& best
   return best_mad;
 }
 
+// Bilateral mesh denoising (Fleishman, Drori, Cohen-Or 2003), as in
+// benchmark_denoising: each vertex moves along its normal n by the bilaterally
+// weighted mean of the heights h = n . (q - v) of the vertices q within 2 sigma_c.
+void bilateral_iteration(Mesh& mesh, double sigma_c, double sigma_s)
+{
+  typedef Mesh::Vertex_index Vertex;
+  auto normals = mesh.add_property_map<Vertex, Epick::Vector_3>("v:bilateral_normal").first;
+  PMP::compute_vertex_normals(mesh, normals);
+  std::vector<Epick::Point_3> moved(mesh.number_of_vertices());
+  std::vector<std::size_t> stamp(mesh.number_of_vertices(), std::size_t(-1));
+  std::vector<Vertex> queue;
+  for(Vertex v : mesh.vertices())
+  {
+    const Epick::Point_3& p = mesh.point(v);
+    const Epick::Vector_3& n = normals[v];
+    double sum = 0, normaliser = 0;
+    queue.assign(1, v);
+    stamp[v.idx()] = v.idx();
+    for(std::size_t k = 0; k < queue.size(); ++k)
+      for(Vertex q : CGAL::vertices_around_target(mesh.halfedge(queue[k]), mesh))
+      {
+        if(stamp[q.idx()] == v.idx())
+          continue;
+        stamp[q.idx()] = v.idx();
+        const double d2 = CGAL::squared_distance(p, mesh.point(q));
+        if(d2 > 4 * sigma_c * sigma_c)
+          continue;
+        queue.push_back(q);
+        const double h = n * (mesh.point(q) - p);
+        const double w = std::exp(-d2 / (2 * sigma_c * sigma_c)) * std::exp(-h * h / (2 * sigma_s * sigma_s));
+        sum += w * h;
+        normaliser += w;
+      }
+    moved[v.idx()] = normaliser > 0 ? p + (sum / normaliser) * n : p;
+  }
+  for(Vertex v : mesh.vertices())
+    mesh.point(v) = moved[v.idx()];
+  mesh.remove_property_map(normals);
+}
+
+// The best MAD of bilateral mesh denoising over the benchmark's grid: widths sigma_c
+// of 1, 1.5, 2 and sigma_s of 0.3, 0.6, 1 mean edge lengths, 1 to 10 iterations.
+double best_bilateral(const Mesh& clean, const Mesh& noisy, std::string& best)
+{
+  const double edge = test_support::mean_edge_length(clean);
+  double best_mad = std::numeric_limits<double>::infinity();
+  for(double c : {1., 1.5, 2.})
+    for(double s : {0.3, 0.6, 1.})
+    {
+      Mesh mesh = noisy;
+      for(unsigned int iterations = 1; iterations <= 10; ++iterations)
+      {
+        bilateral_iteration(mesh, c * edge, s * edge);
+        const double mad = mean_angle_deviation(clean, mesh);
+        if(mad < best_mad)
+        {
+          best_mad = mad;
+          std::ostringstream os;
+          os << "sigma_c " << c << ", sigma_s " << s << " mean edge lengths, " << iterations << " iterations";
+          best = os.str();
+        }
+      }
+    }
+  return best_mad;
+}
+
 void test_fandisk_quality()
 {
   const Mesh clean = test_support::load<Mesh>("fandisk.off");
+  // The target is 3.5 degrees at 0.3 noise; measured (seed 5): 2.38 and 2.72.
+  const double bounds[] = {3., 3.5};
+  int k = 0;
   for(double noise : {0.2, 0.3})
   {
     Mesh noisy = clean;
@@ -91,32 +165,60 @@ void test_fandisk_quality()
     Mesh denoised = noisy;
     HD::denoise_mesh(denoised);
 
-    std::string best;
+    std::string best_smooth, best_bilateral_setting;
     const double noisy_mad = mean_angle_deviation(clean, noisy);
     const double denoised_mad = mean_angle_deviation(clean, denoised);
-    const double smooth_shape_mad = best_smooth_shape(clean, noisy, best);
+    const double smooth_shape_mad = best_smooth_shape(clean, noisy, best_smooth);
+    const double bilateral_mad = best_bilateral(clean, noisy, best_bilateral_setting);
     std::cout << "fandisk, noise " << noise << " mean edge length: MAD noisy " << noisy_mad << ", denoise_mesh "
-              << denoised_mad << ", best smooth_shape " << smooth_shape_mad << " (" << best << ")" << std::endl;
+              << denoised_mad << ", best smooth_shape " << smooth_shape_mad << " (" << best_smooth
+              << "), best bilateral " << bilateral_mad << " (" << best_bilateral_setting << ")" << std::endl;
 
     CHECK(denoised.number_of_vertices() == clean.number_of_vertices());
     CHECK(denoised.number_of_faces() == clean.number_of_faces());
     CHECK(all_finite(denoised));
-    CHECK_MESSAGE(denoised_mad < 0.5 * noisy_mad, denoised_mad << " vs noisy " << noisy_mad);
-    CHECK_MESSAGE(denoised_mad < smooth_shape_mad, denoised_mad << " vs smooth_shape " << smooth_shape_mad);
+    CHECK_MESSAGE(denoised_mad < 0.15 * noisy_mad, denoised_mad << " vs noisy " << noisy_mad);
+    CHECK_MESSAGE(denoised_mad < bounds[k], denoised_mad << " vs the bound " << bounds[k]);
+    CHECK_MESSAGE(denoised_mad < 0.5 * smooth_shape_mad, denoised_mad << " vs smooth_shape " << smooth_shape_mad);
+    CHECK_MESSAGE(denoised_mad < 0.6 * bilateral_mad, denoised_mad << " vs bilateral " << bilateral_mad);
     // EPICK: the self-intersection test is decided with exact predicates.
     CHECK(!PMP::does_self_intersect(denoised));
+    ++k;
   }
 }
 
-// One iteration on elephant: Surface_mesh with EPICK and EPECK, and Polyhedron_3
+// The iterations stop once the vertices have moved as far as the estimated noise
+// times the limit: a smaller limit moves them less (elephant, where it matters).
+void test_displacement_limit()
+{
+  Mesh noisy = test_support::load<Mesh>("elephant.off");
+  test_support::add_normal_noise(noisy, 0.2, 3);
+  double previous = 0;
+  for(double limit : {0.3, 0.8, 1.5})
+  {
+    Mesh denoised = noisy;
+    HD::denoise_mesh(denoised, HD::parameters::displacement_limit(limit));
+    double squares = 0;
+    for(auto v : noisy.vertices())
+      squares += CGAL::squared_distance(noisy.point(v), denoised.point(v));
+    const double rms = std::sqrt(squares / double(noisy.number_of_vertices()));
+    CHECK_MESSAGE(rms > previous, "limit " << limit << ": " << rms << " after " << previous);
+    previous = rms;
+  }
+}
+
+// A few iterations on elephant (three of normal filtering, one of signature
+// diffusion): Surface_mesh with EPICK and EPECK, and Polyhedron_3
 // with Simple_cartesian<double>, agree (all compute in double on the same numbers).
 template <typename Target>
-std::vector<Cartesian::Point_3> denoise_copy(const Mesh& source)
+std::vector<Cartesian::Point_3> denoise_copy(const Mesh& source, HD::Denoising_method method)
 {
   Target target;
   CGAL::copy_face_graph(source, target);
-  HD::denoise_mesh(target, HD::parameters::combine(CGAL::parameters::number_of_iterations(1),
-                                                   HD::parameters::number_of_eigenpairs(60)));
+  const unsigned int iterations = method == HD::Denoising_method::normal_filtering ? 3 : 1;
+  HD::denoise_mesh(target, HD::parameters::combine(CGAL::parameters::number_of_iterations(iterations),
+                                                   HD::parameters::number_of_eigenpairs(60),
+                                                   HD::parameters::denoising_method(method)));
   std::vector<Cartesian::Point_3> points;
   for(auto v : vertices(target))
   {
@@ -139,16 +241,20 @@ void test_kernels_and_mesh_types()
   Mesh mesh = test_support::load<Mesh>("elephant.off");
   test_support::add_normal_noise(mesh, 0.2, 7);
   const double edge = test_support::mean_edge_length(mesh);
-  const std::vector<Cartesian::Point_3> epick = denoise_copy<Mesh>(mesh);
-  const std::vector<Cartesian::Point_3> epeck = denoise_copy<CGAL::Surface_mesh<Epeck::Point_3> >(mesh);
-  const std::vector<Cartesian::Point_3> polyhedron = denoise_copy<CGAL::Polyhedron_3<Cartesian> >(mesh);
-  CHECK(epick.size() == mesh.number_of_vertices() && epeck.size() == epick.size() && polyhedron.size() == epick.size());
-  std::vector<Cartesian::Point_3> input;
-  for(auto v : mesh.vertices())
-    input.emplace_back(mesh.point(v).x(), mesh.point(v).y(), mesh.point(v).z());
-  CHECK_MESSAGE(max_distance(epick, input) > 0.01 * edge, "one iteration moves the vertices");
-  CHECK_MESSAGE(max_distance(epick, epeck) < 1e-9 * edge, max_distance(epick, epeck));
-  CHECK_MESSAGE(max_distance(epick, polyhedron) < 1e-9 * edge, max_distance(epick, polyhedron));
+  for(HD::Denoising_method method : {HD::Denoising_method::normal_filtering, HD::Denoising_method::signature_diffusion})
+  {
+    const std::vector<Cartesian::Point_3> epick = denoise_copy<Mesh>(mesh, method);
+    const std::vector<Cartesian::Point_3> epeck = denoise_copy<CGAL::Surface_mesh<Epeck::Point_3> >(mesh, method);
+    const std::vector<Cartesian::Point_3> polyhedron = denoise_copy<CGAL::Polyhedron_3<Cartesian> >(mesh, method);
+    CHECK(epick.size() == mesh.number_of_vertices() && epeck.size() == epick.size() &&
+          polyhedron.size() == epick.size());
+    std::vector<Cartesian::Point_3> input;
+    for(auto v : mesh.vertices())
+      input.emplace_back(mesh.point(v).x(), mesh.point(v).y(), mesh.point(v).z());
+    CHECK_MESSAGE(max_distance(epick, input) > 0.01 * edge, "the iterations move the vertices");
+    CHECK_MESSAGE(max_distance(epick, epeck) < 1e-9 * edge, max_distance(epick, epeck));
+    CHECK_MESSAGE(max_distance(epick, polyhedron) < 1e-9 * edge, max_distance(epick, polyhedron));
+  }
 }
 
 // NCC, the rescaled kernel and the area-normalised anchors are dimensionless: the
@@ -158,21 +264,25 @@ void test_scale_invariance()
   Mesh mesh = test_support::load<Mesh>("elephant.off");
   test_support::add_normal_noise(mesh, 0.2, 11);
   const double edge = test_support::mean_edge_length(mesh);
-  for(double scale : {1e-3, 1e3})
-  {
-    Mesh reference = mesh, scaled = mesh;
-    for(auto v : scaled.vertices())
-      scaled.point(v) = CGAL::ORIGIN + scale * (scaled.point(v) - CGAL::ORIGIN);
-    const auto np = HD::parameters::combine(CGAL::parameters::number_of_iterations(2),
-                                            HD::parameters::number_of_eigenpairs(60));
-    HD::denoise_mesh(reference, np);
-    HD::denoise_mesh(scaled, np);
-    double error = 0;
-    for(auto v : mesh.vertices())
-      error = (std::max)(error, std::sqrt(CGAL::squared_distance(
-                                    reference.point(v), CGAL::ORIGIN + (scaled.point(v) - CGAL::ORIGIN) / scale)));
-    CHECK_MESSAGE(error < 1e-7 * edge, "scale " << scale << ": " << error / edge << " mean edge lengths");
-  }
+  for(HD::Denoising_method method : {HD::Denoising_method::normal_filtering, HD::Denoising_method::signature_diffusion})
+    for(double scale : {1e-3, 1e3})
+    {
+      Mesh reference = mesh, scaled = mesh;
+      for(auto v : scaled.vertices())
+        scaled.point(v) = CGAL::ORIGIN + scale * (scaled.point(v) - CGAL::ORIGIN);
+      // Normal filtering: its defaults, with the displacement limit.
+      const bool filtering = method == HD::Denoising_method::normal_filtering;
+      const auto np = HD::parameters::combine(CGAL::parameters::number_of_iterations(filtering ? 100 : 2),
+                                              HD::parameters::number_of_eigenpairs(60),
+                                              HD::parameters::denoising_method(method));
+      HD::denoise_mesh(reference, np);
+      HD::denoise_mesh(scaled, np);
+      double error = 0;
+      for(auto v : mesh.vertices())
+        error = (std::max)(error, std::sqrt(CGAL::squared_distance(
+                                      reference.point(v), CGAL::ORIGIN + (scaled.point(v) - CGAL::ORIGIN) / scale)));
+      CHECK_MESSAGE(error < 1e-7 * edge, "scale " << scale << ": " << error / edge << " mean edge lengths");
+    }
 }
 
 void test_parameters()
@@ -192,6 +302,32 @@ void test_parameters()
   CHECK_THROWS(HD::denoise_mesh(mesh, HD::parameters::anchor_weight(nan)), std::invalid_argument, "anchor_weight");
   CHECK_THROWS(HD::denoise_mesh(mesh, CGAL::parameters::number_of_iterations(-2)), std::invalid_argument,
                "number_of_iterations");
+  CHECK_THROWS(HD::denoise_mesh(mesh, HD::parameters::normal_sigma(0.)), std::invalid_argument, "normal_sigma");
+  CHECK_THROWS(HD::denoise_mesh(mesh, HD::parameters::normal_sigma(nan)), std::invalid_argument, "normal_sigma");
+  CHECK_THROWS(HD::denoise_mesh(mesh, HD::parameters::normal_sigma(inf)), std::invalid_argument, "normal_sigma");
+  CHECK_THROWS(HD::denoise_mesh(mesh, HD::parameters::displacement_limit(0.)), std::invalid_argument,
+               "displacement_limit");
+  CHECK_THROWS(HD::denoise_mesh(mesh, HD::parameters::displacement_limit(nan)), std::invalid_argument,
+               "displacement_limit");
+  CHECK_THROWS(HD::denoise_mesh(mesh, HD::parameters::denoising_method(static_cast<HD::Denoising_method>(7))),
+               std::invalid_argument, "denoising_method");
+  // A cancelled normal filtering throws and leaves the mesh untouched.
+  Mesh noisy = mesh;
+  test_support::add_normal_noise(noisy, 0.2, 5);
+  const Mesh noisy_input = noisy;
+  std::size_t calls = 0;
+  const std::function<bool(double)> cancel = [&calls](double fraction) {
+    ++calls;
+    return fraction < 0.015;
+  };
+  CHECK_THROWS(HD::denoise_mesh(noisy, HD::parameters::combine(HD::parameters::progress_callback(cancel),
+                                                               CGAL::parameters::number_of_iterations(100))),
+               std::runtime_error, "cancelled");
+  CHECK_MESSAGE(calls == 2, calls);
+  bool untouched = true;
+  for(auto v : noisy.vertices())
+    untouched = untouched && noisy.point(v) == noisy_input.point(v);
+  CHECK(untouched);
   // Rejected parameters, and zero iterations, leave the mesh untouched.
   HD::denoise_mesh(mesh, CGAL::parameters::number_of_iterations(0));
   bool unchanged = true;
@@ -211,6 +347,7 @@ int main()
   test_parameters();
   test_kernels_and_mesh_types();
   test_scale_invariance();
+  test_displacement_limit();
   test_fandisk_quality();
   return test_support::report("test_denoising");
 }

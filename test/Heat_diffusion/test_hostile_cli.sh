@@ -23,7 +23,7 @@ declare -A commands=(
   [hks]="-m 10"
   [decompose]="-m 10 --levels 2 --steps-per-level 2"
   [enhance]="-m 10 --steps-per-level 2"
-  [denoise]="-m 10 --iterations 1"
+  [denoise]="--iterations 3"
 )
 available=()
 for c in ncc diffuse features hks decompose enhance denoise; do
@@ -201,19 +201,22 @@ mkdir -p params && cd params || exit 1
 for c in "${available[@]}"; do
   [ "$c" = ncc ] && continue
   help=$("$tool" "$c" --help)
+  # denoise takes the diffusion options with its signature_diffusion method only
+  extra=()
+  [ "$c" = denoise ] && extra=(--method signature_diffusion)
   # shellcheck disable=SC2086
-  expect 0 '' -- "$tool" "$c" "$octahedron" ${commands[$c]} -m 1000 --quiet
+  expect 0 '' -- "$tool" "$c" "$octahedron" ${commands[$c]} "${extra[@]}" -m 1000 --quiet
   for bad in 0 -1 nan inf -inf abc '' 1e30 -1e30 2.5 1000001 18446744073709551616; do
-    grep -q -- '-m M' <<<"$help" && expect 2 '-m must be a whole number from 1 to 1000000' -- "$tool" "$c" "$octahedron" -m "$bad"
+    grep -q -- '-m M' <<<"$help" && expect 2 '-m must be a whole number from 1 to 1000000' -- "$tool" "$c" "$octahedron" "${extra[@]}" -m "$bad"
   done
   for bad in 0 -1 nan inf -inf abc ''; do
     grep -q -- '--sigma S' <<<"$help" && [ "$bad" != inf ] &&
-      expect 2 '--sigma must be a number > 0' -- "$tool" "$c" "$octahedron" --sigma "$bad"
-    grep -q -- '--time T' <<<"$help" && expect 2 '--time must be a number > 0' -- "$tool" "$c" "$octahedron" --time "$bad"
+      expect 2 '--sigma must be a number > 0' -- "$tool" "$c" "$octahedron" "${extra[@]}" --sigma "$bad"
+    grep -q -- '--time T' <<<"$help" && expect 2 '--time must be a number > 0' -- "$tool" "$c" "$octahedron" "${extra[@]}" --time "$bad"
   done
   if grep -q -- '--coarse N  *compute' <<<"$help"; then
     for bad in -1 1 3 1.5 nan abc '' 1e30 1000000001; do
-      expect 2 '--coarse must be' -- "$tool" "$c" "$octahedron" --coarse "$bad"
+      expect 2 '--coarse must be' -- "$tool" "$c" "$octahedron" "${extra[@]}" --coarse "$bad"
     done
   fi
   if grep -q -- '-k K1' <<<"$help"; then
@@ -274,7 +277,7 @@ cp "$corpus/octahedron.off" mine.off
 ln -sf mine.off link.ply
 ln -f mine.off hard.ply
 for c in "${available[@]}"; do
-  [ "$c" = ncc ] && extra=() || extra=(-m 4)
+  case $c in ncc) extra=() ;; denoise) extra=(--iterations 1) ;; *) extra=(-m 4) ;; esac
   case $c in
     ncc|hks|enhance|denoise)  # -o names the output file
       for target in mine.off ./mine.off "$(pwd)/mine.off" ../overwrite/mine.off link.ply hard.ply; do

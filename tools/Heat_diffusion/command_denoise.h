@@ -1,7 +1,8 @@
 // Copyright (c) 2026 The CGAL Heat_diffusion developers.
 // SPDX-License-Identifier: LGPL-3.0-or-later
 //
-// heat_diffusion denoise: mesh denoising by diffusion of the Normal Signature (eq. 22-23).
+// heat_diffusion denoise: mesh denoising (denoise_mesh), by anisotropic normal filtering or by
+// the paper's diffusion of the Normal Signature (eq. 22-23).
 
 #ifndef CGAL_HEAT_DIFFUSION_TOOLS_COMMAND_DENOISE_H
 #define CGAL_HEAT_DIFFUSION_TOOLS_COMMAND_DENOISE_H
@@ -21,33 +22,43 @@ inline Diffusion_spec denoise_spec()
 {
   Diffusion_spec spec;
   spec.sigma_default = "1";
-  spec.sigma_note = "much smaller values make the eigen solve fail on noisy meshes";
+  spec.sigma_note = "signature diffusion only; much smaller values make the eigen solve fail on noisy meshes";
+  spec.time_note = "signature diffusion only";
   spec.steps = Diffusion_spec::single_step;
-  spec.steps_default = "1";
-  spec.steps_help = "diffusion steps of the signature per iteration, 0 to 1000000 (default 1)";
-  // CGAL::Heat_diffusion::denoise_mesh() builds its diffusion from sigma, time and
-  // number_of_eigenpairs only: the other options would be silently ignored.
-  spec.local_refusal = "denoise_mesh() uses the spectral kernel only";
-  spec.coarse_refusal = "denoise_mesh() does not take the coarse level (it applies the automatic choice)";
+  spec.steps_default = "2";  // normal filtering; run_denoise() sets 1 for signature diffusion
+  spec.steps_help = "steps per iteration, 0 to 1000000: normal diffusion steps (normal filtering, default 2) "
+                    "or diffusion steps of the signature (signature diffusion, default 1)";
   spec.scale_invariant = false;
   return spec;
 }
 
 inline std::string denoise_help()
 {
-  return "Usage: heat_diffusion denoise NOISY [-o OUT] [--iterations N] [--sigma S] [--time T]\n"
-         "                              [--kernel spectral] [-m M] [-k K] [--anchor-weight W] [--json] [--quiet]\n"
+  return "Usage: heat_diffusion denoise NOISY [-o OUT] [--method normal_filtering|signature_diffusion]\n"
+         "                              [--iterations N] [-k K] [--normal-sigma S] [--displacement-limit D]\n"
+         "                              [--sigma S] [--time T] [--kernel K] [-m M] [--coarse N]\n"
+         "                              [--anchor-weight W] [--json] [--quiet]\n"
          "\n"
-         "Denoises a triangle mesh: each iteration diffuses the Normal Signature with the\n"
-         "edge-weighted heat kernel of the current mesh, averages the normals of each one-ring\n"
-         "weighted by |NS| (the paper's eq. 22, made robust), and moves the vertices to match the\n"
-         "diffused signature along those normals in the least-squares sense (eq. 23). The\n"
-         "connectivity is kept.\n"
+         "Denoises a triangle mesh, keeping its connectivity (CGAL::Heat_diffusion::denoise_mesh).\n"
+         "normal_filtering (default): the face normals are diffused with the edge weights of the\n"
+         "paper's eq. 10 (normals in place of the NCC) and the vertices moved to fit them, until\n"
+         "the vertices have moved by the noise level estimated from the Normal Signature.\n"
+         "signature_diffusion: the paper's pipeline (eq. 22-23): each iteration diffuses the Normal\n"
+         "Signature with the edge-weighted heat kernel, updates the normals and reconstructs the\n"
+         "vertices from the diffused signature in the least-squares sense.\n"
          "\n"
          "Options:\n" +
-         help_option("--iterations N", "outer iterations, each on the previous result, 0 to 10000 (default 2)") +
+         help_option("--method M", "normal_filtering (default) or signature_diffusion") +
+         help_option("--iterations N", "at most N iterations, each on the previous result, 0 to 10000 (default 100 "
+                                       "for normal filtering, where the displacement limit usually stops it "
+                                       "earlier; 2 for signature diffusion)") +
+         help_option("--normal-sigma S", "normal filtering: width of the normal weights exp(-|n_f-n_g|^2/2S^2) "
+                                         "(default: from the estimated noise, max(0.4, 1.6 noise / mean edge))") +
+         help_option("--displacement-limit D", "normal filtering: stop when the RMS vertex displacement reaches D "
+                                               "times the estimated noise level (default 1.1)") +
          diffusion_options_help(denoise_spec()) +
-         help_option("--anchor-weight W", "weight that holds vertices at their current positions (default 0.7)") +
+         help_option("--anchor-weight W", "signature diffusion: weight that holds vertices at their current "
+                                          "positions (default 0.7)") +
          help_option("-o OUT", "the denoised mesh, .off, .obj, .ply or .stl (default: NOISY's name with "
                                "_denoised.off, in the current folder); never the input") +
          help_option("--json", "print a JSON summary on stdout: the parameters, the mean and largest vertex "
@@ -58,7 +69,8 @@ inline std::string denoise_help()
 inline int run_denoise(int argc, char** argv)
 {
   const Diffusion_spec spec = denoise_spec();
-  Arguments args = diffusion_arguments(spec, {}, {"--iterations", "--anchor-weight"});
+  Arguments args = diffusion_arguments(spec, {}, {"--iterations", "--anchor-weight", "--method", "--normal-sigma",
+                                                  "--displacement-limit"});
   args.parse(argc, argv, 2);
   if(args.flag("-h") || args.flag("--help"))
   {
@@ -68,10 +80,31 @@ inline int run_denoise(int argc, char** argv)
   if(args.positional().size() != 1)
     throw Usage_error("denoise takes exactly one NOISY mesh argument");
   const std::string input = args.positional()[0];
-  const Diffusion_options o = parse_diffusion_options(args, spec);
-  const std::size_t iterations = parse_count("--iterations", args.value("--iterations", "2"), 0, 10000);
+  const std::string method_name = args.value("--method", "normal_filtering");
+  if(method_name != "normal_filtering" && method_name != "signature_diffusion")
+    throw Usage_error("--method must be normal_filtering or signature_diffusion, not '" + method_name + "'");
+  const bool filtering = method_name == "normal_filtering";
+  const HD::Denoising_method method =
+      filtering ? HD::Denoising_method::normal_filtering : HD::Denoising_method::signature_diffusion;
+  // The options of the other method would be silently ignored: refused instead.
+  for(const char* option : filtering ? std::vector<const char*>{"--sigma", "--time", "--kernel", "-m", "--coarse",
+                                                                "--anchor-weight"}
+                                     : std::vector<const char*>{"--normal-sigma", "--displacement-limit"})
+    if(args.has(option))
+      throw Usage_error(std::string(option) + " applies to --method " +
+                        (filtering ? "signature_diffusion" : "normal_filtering") + " only");
+  Diffusion_spec method_spec = spec;
+  method_spec.steps_default = filtering ? "2" : "1";
+  const Diffusion_options o = parse_diffusion_options(args, method_spec);
+  const std::size_t iterations =
+      parse_count("--iterations", args.value("--iterations", filtering ? "100" : "2"), 0, 10000);
   const std::size_t k = o.steps.front();
   const double anchor_weight = parse_number("--anchor-weight", args.value("--anchor-weight", "0.7"), 0., true);
+  const double displacement_limit =
+      parse_number("--displacement-limit", args.value("--displacement-limit", "1.1"), 0., true);
+  const bool automatic_normal_sigma = !args.has("--normal-sigma");
+  const double normal_sigma =
+      automatic_normal_sigma ? 0. : parse_number("--normal-sigma", args.value("--normal-sigma", ""), 0., true);
   const std::string output = args.value("-o", default_output(input, "_denoised.off"));
   mesh_format(output);
   check_output_path(output, {input});
@@ -87,13 +120,17 @@ inline int run_denoise(int argc, char** argv)
   // the input). The progress bar follows its progress_callback, where it reports one.
   Progress_bar progress("denoising", !o.quiet);
   for_input(input, [&] {
-    HD::denoise_mesh(mesh, HD::parameters::combine(CGAL::parameters::number_of_iterations(unsigned(iterations)),
-                                                   HD::parameters::sigma(o.sigma), HD::parameters::time(o.time),
-                                                   HD::parameters::number_of_eigenpairs(o.eigenpairs),
-                                                   HD::parameters::number_of_steps(k),
-                                                   HD::parameters::anchor_weight(anchor_weight),
-                                                   HD::parameters::progress_callback(
-                                                       std::function<bool(double)>(std::ref(progress)))));
+    const auto np = HD::parameters::combine(
+        HD::parameters::denoising_method(method), CGAL::parameters::number_of_iterations(unsigned(iterations)),
+        HD::parameters::number_of_steps(k), HD::parameters::displacement_limit(displacement_limit),
+        HD::parameters::sigma(o.sigma), HD::parameters::time(o.time), HD::parameters::kernel_method(o.method),
+        HD::parameters::number_of_eigenpairs(o.eigenpairs), HD::parameters::coarse_vertex_count(o.coarse),
+        HD::parameters::anchor_weight(anchor_weight),
+        HD::parameters::progress_callback(std::function<bool(double)>(std::ref(progress))));
+    if(automatic_normal_sigma)  // the default depends on the noise: left to denoise_mesh()
+      HD::denoise_mesh(mesh, np);
+    else
+      HD::denoise_mesh(mesh, HD::parameters::combine(np, HD::parameters::normal_sigma(normal_sigma)));
   });
   progress.finish();
   timer.stop("denoise");
@@ -122,8 +159,8 @@ inline int run_denoise(int argc, char** argv)
   timer.stop("write");
 
   if(!o.quiet)
-    std::cerr << input << ": " << mesh.number_of_vertices() << " vertices, " << iterations
-              << " iterations, vertices moved by " << displacement_mean << " mean edge lengths on average (at most "
+    std::cerr << input << ": " << mesh.number_of_vertices() << " vertices, " << method_name
+              << ", vertices moved by " << displacement_mean << " mean edge lengths on average (at most "
               << displacement_max << ")\nwritten to " << output << "\n";
   if(o.json)
   {
@@ -136,10 +173,20 @@ inline int run_denoise(int argc, char** argv)
         .integer("vertices", (long long)mesh.number_of_vertices())
         .integer("faces", (long long)mesh.number_of_faces())
         .integer("triangulated_faces", (long long)triangulated)
-        .integer("iterations", (long long)iterations);
-    add_diffusion_json(summary, o, mesh.number_of_vertices(), nullptr);
-    summary.integer("steps", (long long)k)
-        .number("anchor_weight", anchor_weight)
+        .string("method", method_name)
+        .integer("max_iterations", (long long)iterations);
+    if(filtering)
+    {
+      summary.integer("steps", (long long)k).number("displacement_limit", displacement_limit);
+      if(!automatic_normal_sigma)
+        summary.number("normal_sigma", normal_sigma);
+    }
+    else
+    {
+      add_diffusion_json(summary, o, mesh.number_of_vertices(), nullptr);
+      summary.integer("steps", (long long)k).number("anchor_weight", anchor_weight);
+    }
+    summary
         .object("displacement_in_mean_edge_lengths", displacement)
         .object("timings_ms", timings_json(timer));
     std::cout << summary.str() << std::endl;

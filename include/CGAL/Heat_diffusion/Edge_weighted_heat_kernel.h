@@ -156,6 +156,8 @@ public:
       internal::throw_invalid_input("Edge_weighted_heat_kernel: the mesh is empty");
     const std::size_t n = mesh.number_of_vertices();
     const double requested_coarse = double(choose_parameter(get_parameter(np, internal_np::coarse_vertex_count), -1));
+    if(!std::isfinite(requested_coarse))
+      internal::throw_invalid_input("Edge_weighted_heat_kernel: coarse_vertex_count must be finite");
     if(requested_coarse < 0)
       coarse_vertices_ = n > automatic_coarse_threshold ? automatic_coarse_vertex_count : 0;
     else

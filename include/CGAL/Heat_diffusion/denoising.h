@@ -16,12 +16,63 @@
 
 #include <Eigen/Core>
 
+#include <algorithm>
 #include <cmath>
 #include <cstddef>
+#include <functional>
+#include <stdexcept>
+#include <limits>
 #include <vector>
 
 namespace CGAL {
 namespace Heat_diffusion {
+
+/// \ingroup PkgHeatDiffusionApplications
+/// The algorithm of `denoise_mesh()` (its named parameter `denoising_method`).
+enum class Denoising_method
+{
+  /// The default: anisotropic diffusion of the face normals, whose edge weights
+  /// are those of eq. 10 with the normals in place of the NCC, alternated with
+  /// vertex updates that fit the faces to the diffused normals, for as long as the
+  /// vertices have moved less than the noise level estimated from the Normal
+  /// Signature (see `denoise_mesh()`).
+  normal_filtering,
+  /// The paper's pipeline (eq. 22-23): the Normal Signature diffused with the
+  /// edge-weighted heat kernel, the normals updated, the vertices reconstructed by
+  /// `reconstruct_from_normal_signature()`.
+  signature_diffusion
+};
+
+/// \cond SKIP_IN_MANUAL
+namespace internal_np {
+enum denoising_method_t { denoising_method };
+enum normal_sigma_t { normal_sigma };
+enum displacement_limit_t { displacement_limit };
+} // namespace internal_np
+/// \endcond
+
+namespace parameters {
+/// The algorithm of `denoise_mesh()`, a `Denoising_method`.
+template <typename T>
+CGAL::Named_function_parameters<T, internal_np::denoising_method_t> denoising_method(const T& value)
+{
+  return CGAL::Named_function_parameters<T, internal_np::denoising_method_t>(value);
+}
+/// The width \f$ \sigma_n \f$ of the normal weights \f$ \exp(-|n_f - n_g|^2 / 2\sigma_n^2) \f$ of
+/// `denoise_mesh()` (`Denoising_method::normal_filtering`).
+template <typename T>
+CGAL::Named_function_parameters<T, internal_np::normal_sigma_t> normal_sigma(const T& value)
+{
+  return CGAL::Named_function_parameters<T, internal_np::normal_sigma_t>(value);
+}
+/// The bound on the root mean square displacement of `denoise_mesh()`
+/// (`Denoising_method::normal_filtering`), in multiples of the estimated noise level.
+template <typename T>
+CGAL::Named_function_parameters<T, internal_np::displacement_limit_t> displacement_limit(const T& value)
+{
+  return CGAL::Named_function_parameters<T, internal_np::displacement_limit_t>(value);
+}
+} // namespace parameters
 
 /// \cond SKIP_IN_MANUAL
 namespace internal {
@@ -59,12 +110,198 @@ inline std::vector<Eigen::Vector3d> signature_weighted_normals(const Indexed_mes
   return result;
 }
 
+// The noise level of a mesh, estimated from its Normal Signature. h_i = s_i sqrt(a_i)
+// is the height of v_i above the NCC-weighted average of its neighbours, along n_i.
+// On a smooth surface h varies slowly, so h_i - sum_j omega_ij h_j is small, while
+// independent noise of standard deviation e along the normals makes it about e (the
+// ratio measured on fandisk, elephant and armadillo with 0.1 to 0.5 mean edge length
+// of noise: 0.6 to 1.2, lower for stronger noise). The median over interior vertices
+// is robust to creases and corners. In the normalised frame of `mesh`.
+inline double estimated_noise_level(const Indexed_mesh& mesh, const Ncc_data& data)
+{
+  const std::size_t n = mesh.number_of_vertices();
+  std::vector<double> height(n), residual;
+  for(std::size_t i = 0; i < n; ++i)
+    height[i] = data.signature[i] * std::sqrt(data.areas[i]);
+  residual.reserve(n);
+  for(std::size_t i = 0; i < n; ++i)
+  {
+    if(!mesh.fan_is_closed[i])
+      continue;
+    double r = height[i];
+    for(std::size_t k = mesh.fan_begin[i]; k < mesh.fan_begin[i + 1]; ++k)
+      r -= data.weights[k] * height[mesh.fan[k]];
+    if(std::isfinite(r))
+      residual.push_back(std::abs(r));
+  }
+  if(residual.empty())
+    return 0.;
+  std::nth_element(residual.begin(), residual.begin() + std::ptrdiff_t(residual.size() / 2), residual.end());
+  return residual[residual.size() / 2];
+}
+
+// Face normals, areas and centroids of `points` on the triangles of `mesh`.
+inline void face_geometry(const Indexed_mesh& mesh, const std::vector<Eigen::Vector3d>& points,
+                          std::vector<Eigen::Vector3d>& normals, std::vector<double>& areas,
+                          std::vector<Eigen::Vector3d>& centroids)
+{
+  const std::size_t m = mesh.triangles.size();
+  normals.resize(m);
+  areas.resize(m);
+  centroids.resize(m);
+  for(std::size_t f = 0; f < m; ++f)
+  {
+    const auto& t = mesh.triangles[f];
+    const Eigen::Vector3d cross = (points[t[1]] - points[t[0]]).cross(points[t[2]] - points[t[0]]);
+    const double length = cross.norm();
+    areas[f] = 0.5 * length;
+    normals[f] = length > 0 ? Eigen::Vector3d(cross / length) : Eigen::Vector3d::Zero();
+    centroids[f] = (points[t[0]] + points[t[1]] + points[t[2]]) / 3.;
+  }
+}
+
+// The faces around each vertex, and the faces that share a vertex with each face.
+struct Face_adjacency
+{
+  std::vector<std::size_t> vertex_faces_begin, vertex_faces;
+  std::vector<std::size_t> face_faces_begin, face_faces;
+  std::vector<std::pair<std::size_t, std::size_t> > edge_adjacent_faces;
+};
+
+inline Face_adjacency make_face_adjacency(const Indexed_mesh& mesh)
+{
+  const std::size_t n = mesh.number_of_vertices(), m = mesh.triangles.size();
+  Face_adjacency a;
+  a.vertex_faces_begin.assign(n + 1, 0);
+  for(const auto& t : mesh.triangles)
+    for(std::size_t v : t)
+      ++a.vertex_faces_begin[v + 1];
+  for(std::size_t i = 0; i < n; ++i)
+    a.vertex_faces_begin[i + 1] += a.vertex_faces_begin[i];
+  a.vertex_faces.resize(a.vertex_faces_begin[n]);
+  std::vector<std::size_t> fill(a.vertex_faces_begin.begin(), a.vertex_faces_begin.end() - 1);
+  for(std::size_t f = 0; f < m; ++f)
+    for(std::size_t v : mesh.triangles[f])
+      a.vertex_faces[fill[v]++] = f;
+
+  a.face_faces_begin.assign(1, 0);
+  std::vector<std::size_t> ring;
+  for(std::size_t f = 0; f < m; ++f)
+  {
+    ring.clear();
+    for(std::size_t v : mesh.triangles[f])
+      for(std::size_t k = a.vertex_faces_begin[v]; k < a.vertex_faces_begin[v + 1]; ++k)
+        if(a.vertex_faces[k] != f)
+          ring.push_back(a.vertex_faces[k]);
+    std::sort(ring.begin(), ring.end());
+    for(std::size_t k = 0; k < ring.size();)
+    {
+      std::size_t l = k;
+      while(l < ring.size() && ring[l] == ring[k])
+        ++l;
+      a.face_faces.push_back(ring[k]);
+      if(l - k >= 2 && ring[k] > f)  // two shared vertices: an edge
+        a.edge_adjacent_faces.emplace_back(f, ring[k]);
+      k = l;
+    }
+    a.face_faces_begin.push_back(a.face_faces.size());
+  }
+  return a;
+}
+
+// One step of the anisotropic diffusion of the face normals:
+// n_f <- normalise(sum_{g in {f} u R(f)} a_g exp(-|c_f - c_g|^2 / 2 sigma_c^2)
+//                                          exp(-|n_f - n_g|^2 / 2 sigma_n^2) n_g),
+// R(f) the faces sharing a vertex with f: the edge weights of eq. 10, with the
+// normals in place of the NCC, times a spatial Gaussian.
+inline void diffuse_face_normals(const Face_adjacency& adjacency, const std::vector<double>& areas,
+                                 const std::vector<Eigen::Vector3d>& centroids, double sigma_c, double sigma_n,
+                                 std::vector<Eigen::Vector3d>& normals)
+{
+  const std::size_t m = normals.size();
+  std::vector<Eigen::Vector3d> next(m);
+  const double spatial = 1. / (2. * sigma_c * sigma_c), range = 1. / (2. * sigma_n * sigma_n);
+  parallel_for(m, [&](std::size_t f) {
+    Eigen::Vector3d sum = areas[f] * normals[f];
+    for(std::size_t k = adjacency.face_faces_begin[f]; k < adjacency.face_faces_begin[f + 1]; ++k)
+    {
+      const std::size_t g = adjacency.face_faces[k];
+      sum += areas[g] * std::exp(-(centroids[f] - centroids[g]).squaredNorm() * spatial -
+                                 (normals[f] - normals[g]).squaredNorm() * range) *
+             normals[g];
+    }
+    const double length = sum.norm();
+    next[f] = length > 0 && std::isfinite(length) ? Eigen::Vector3d(sum / length) : normals[f];
+  });
+  normals.swap(next);
+}
+
+// Vertex update for given face normals (Sun et al. 2007): Jacobi steps of the fit
+// of each face's plane to its target normal,
+// v_i <- v_i + (1/|F_i|) sum_{f in F_i} n_f n_f^T (c_f - v_i).
+inline void fit_vertices_to_normals(const Indexed_mesh& mesh, const Face_adjacency& adjacency,
+                                    const std::vector<Eigen::Vector3d>& face_normals, std::size_t steps,
+                                    std::vector<Eigen::Vector3d>& points)
+{
+  const std::size_t n = points.size();
+  std::vector<Eigen::Vector3d> next(n), centroids(mesh.triangles.size());
+  for(std::size_t step = 0; step < steps; ++step)
+  {
+    for(std::size_t f = 0; f < mesh.triangles.size(); ++f)
+    {
+      const auto& t = mesh.triangles[f];
+      centroids[f] = (points[t[0]] + points[t[1]] + points[t[2]]) / 3.;
+    }
+    parallel_for(n, [&](std::size_t i) {
+      Eigen::Vector3d move = Eigen::Vector3d::Zero();
+      const std::size_t begin = adjacency.vertex_faces_begin[i], end = adjacency.vertex_faces_begin[i + 1];
+      for(std::size_t k = begin; k < end; ++k)
+      {
+        const std::size_t f = adjacency.vertex_faces[k];
+        move += face_normals[f] * face_normals[f].dot(centroids[f] - points[i]);
+      }
+      next[i] = end > begin ? Eigen::Vector3d(points[i] + move / double(end - begin)) : points[i];
+    });
+    points.swap(next);
+  }
+}
+
 } // namespace internal
 /// \endcond
 
 /// \ingroup PkgHeatDiffusionApplications
-/// Denoises the triangle mesh `tm` by anisotropic diffusion of its Normal Signature
-/// (paper, section 7, eq. 22-23). Each of the `number_of_iterations` iterations
+/// Denoises the triangle mesh `tm` in place, keeping its connectivity. Two algorithms
+/// are available (named parameter `denoising_method`).
+///
+/// <b>`Denoising_method::normal_filtering` (the default).</b> The paper's denoising
+/// (section 7, eq. 22-23) diffuses the Normal Signature and reconstructs the vertices
+/// from it; on a noisy mesh the diffused signature is too poor a target (see the user
+/// manual), so the default diffuses the <em>normals</em> with the anisotropic edge weights
+/// of eq. 10 instead, and fits the vertices to them:
+///  1. the noise level \f$ \hat\varepsilon \f$ of the input is estimated from its Normal
+///     Signature: \f$ h_i = s_i \sqrt{a_i} \f$ is the height of \f$ v_i \f$ above the NCC-weighted
+///     average of its neighbours; \f$ \hat\varepsilon \f$ is the median over interior vertices of
+///     \f$ |h_i - \sum_j \omega_{ij} h_j| \f$ (about the standard deviation of noise along the
+///     normals: 0.6 to 1.2 times it on fandisk, elephant and armadillo with 0.1 to 0.5
+///     mean edge length of noise);
+///  2. each iteration diffuses the face normals `number_of_steps` times,
+///     \f$ n_f \leftarrow \sum_{g} a_g\, e^{-|c_f - c_g|^2/2\sigma_c^2}\, e^{-|n_f - n_g|^2/2\sigma_n^2}\, n_g \f$
+///     (normalised) over f and the faces g sharing a vertex with f (\f$ a_g \f$ areas,
+///     \f$ c_g \f$ centroids, \f$ \sigma_c \f$ the mean distance between the centroids of
+///     adjacent faces, \f$ \sigma_n \f$ = `normal_sigma`): the weights of eq. 10 with
+///     normals in place of the NCC, which stop the diffusion across creases;
+///  3. then moves the vertices so that the faces fit the diffused normals (five Jacobi
+///     steps of \f$ v_i \leftarrow v_i + \frac{1}{|F_i|}\sum_{f \ni v_i} n_f n_f^T (c_f - v_i) \f$,
+///     the vertex update of Sun et al. 2007);
+///  4. and stops after `number_of_iterations` iterations, or as soon as the root mean
+///     square displacement of the vertices from the input reaches `displacement_limit`
+///     \f$ \times\, \hat\varepsilon \f$: a mesh should not be moved further than its noise.
+///     This stop matters on smooth meshes whose detail is at the scale of the edges,
+///     where the diffusion keeps removing shape; on meshes of flat parts and creases the
+///     iterations converge before.
+///
+/// <b>`Denoising_method::signature_diffusion`: the paper's pipeline.</b> Each of the
+/// `number_of_iterations` iterations
 ///  1. builds the edge-weighted heat kernel and the diffusion operator \f$ A_t \f$ of the
 ///     current mesh (`Anisotropic_heat_diffusion`, parameters `sigma`, `time`,
 ///     `number_of_eigenpairs`), and diffuses the Normal Signature:
@@ -78,22 +315,15 @@ inline std::vector<Eigen::Vector3d> signature_weighted_normals(const Indexed_mes
 ///     normals cancel keeps its current normal;
 ///  3. moves the vertices with `reconstruct_from_normal_signature()` (eq. 23), targets
 ///     \f$ S' \f$ along \f$ n' \f$, anchored to the current positions with `anchor_weight`.
+/// `sigma` = 1 rather than the paper's 0.1: on a noisy mesh the NCC differ by the noise
+/// across every edge, so with `sigma` = 0.1 all edge weights underflow and the eigen
+/// solve does not converge. Two iterations with anchors of weight 0.7 were the best
+/// compromise found on fandisk; more iterations, or weaker anchors, fold the mesh near
+/// its corners.
 ///
-/// The connectivity is not changed, only the positions; every position stays finite.
-///
-/// <b>Defaults, and what they reach.</b> The defaults were chosen by measurement on
-/// CGAL's `fandisk.off` with Gaussian noise along the normals of 0.2 and 0.3 mean edge
-/// length (see the user manual for the tables). `sigma` = 1 rather than the paper's
-/// feature-preserving 0.1: on a noisy mesh the NCC differ by the noise across every
-/// edge, so with `sigma` = 0.1 all edge weights underflow, the stiffness matrix is
-/// numerically zero and the eigen solve does not converge. The truncated spectral
-/// kernel (m = 150, t = 1) is wide (heat regions of about 100 vertices), so one
-/// diffusion step already averages the signature over its regions, and more steps
-/// change the result by less than 0.1 degree. Two iterations with anchors of weight
-/// 0.7 were the best compromise, over 0.1, 0.2 and 0.3 noise, of the settings tried that
-/// leave fandisk free of self-intersections (weight 0.5 is better at 0.3 noise and worse
-/// at 0.1 and 0.2); more iterations, or weaker anchors, fold the mesh near its corners,
-/// where the diffused signature underestimates the sharp creases.
+/// Every position stays finite. The defaults were chosen by measurement on CGAL's
+/// `fandisk.off`, `elephant.off` and `armadillo.off` with Gaussian noise along the
+/// normals of 0.1 to 0.5 mean edge length (see the user manual for the table).
 ///
 /// @tparam TriangleMesh a model of `FaceListGraph` and `HalfedgeListGraph`
 /// @tparam NamedParameters a sequence of named parameters
@@ -102,35 +332,59 @@ inline std::vector<Eigen::Vector3d> signature_weighted_normals(const Indexed_mes
 /// @param np an optional sequence of named parameters among those below
 ///
 /// \cgalNamedParamsBegin
+///   \cgalParamNBegin{denoising_method}
+///     \cgalParamDescription{the algorithm (see above)}
+///     \cgalParamType{`Denoising_method`}
+///     \cgalParamDefault{`Denoising_method::normal_filtering`}
+///   \cgalParamNEnd
 ///   \cgalParamNBegin{number_of_iterations}
-///     \cgalParamDescription{the number of outer iterations (diffusion, normal update, reconstruction), each on the result of the previous one; 0 leaves `tm` unchanged}
+///     \cgalParamDescription{the (largest) number of outer iterations; 0 leaves `tm` unchanged}
 ///     \cgalParamType{`unsigned int` (\cgal's own named parameter `CGAL::parameters::number_of_iterations`)}
-///     \cgalParamDefault{`2`}
+///     \cgalParamDefault{`100` (normal filtering; the displacement limit usually stops it before) or `2` (signature diffusion)}
+///   \cgalParamNEnd
+///   \cgalParamNBegin{number_of_steps}
+///     \cgalParamDescription{normal filtering: the number of diffusion steps of the face normals per iteration; signature diffusion: the number k of diffusion steps of the signature per iteration}
+///     \cgalParamType{`std::size_t`}
+///     \cgalParamDefault{`2` (normal filtering) or `1` (signature diffusion)}
+///   \cgalParamNEnd
+///   \cgalParamNBegin{normal_sigma}
+///     \cgalParamDescription{normal filtering only: the width \f$ \sigma_n \f$ of the normal weights; smaller keeps more creases, and more noise}
+///     \cgalParamType{`double`, positive}
+///     \cgalParamDefault{\f$ \max(0.4,\ 1.6\,\hat\varepsilon / \bar e) \f$, \f$ \bar e \f$ the mean edge length: wider for noisier meshes}
+///   \cgalParamNEnd
+///   \cgalParamNBegin{displacement_limit}
+///     \cgalParamDescription{normal filtering only: the iterations stop once the root mean square displacement from the input reaches this multiple of the estimated noise level; `std::numeric_limits<double>::infinity()` runs all of them}
+///     \cgalParamType{`double`, positive}
+///     \cgalParamDefault{`1.1`}
 ///   \cgalParamNEnd
 ///   \cgalParamNBegin{sigma}
-///     \cgalParamDescription{the width of the edge weights of the heat kernel; values much smaller than the noise of the NCC make the eigen solve fail (see above)}
+///     \cgalParamDescription{signature diffusion only: the width of the edge weights of the heat kernel; values much smaller than the noise of the NCC make the eigen solve fail (see above)}
 ///     \cgalParamType{`double`, positive}
 ///     \cgalParamDefault{`1`}
 ///   \cgalParamNEnd
 ///   \cgalParamNBegin{time}
-///     \cgalParamDescription{the time t of one diffusion step, on the mesh rescaled to area = number of vertices}
+///     \cgalParamDescription{signature diffusion only: the time t of one diffusion step, on the mesh rescaled to area = number of vertices}
 ///     \cgalParamType{`double`, positive and finite}
-///     \cgalParamDefault{`1`}
-///   \cgalParamNEnd
-///   \cgalParamNBegin{number_of_steps}
-///     \cgalParamDescription{the number k of diffusion steps of the signature per iteration}
-///     \cgalParamType{`std::size_t`}
 ///     \cgalParamDefault{`1`}
 ///   \cgalParamNEnd
 ///   \cgalParamNBegin{number_of_eigenpairs}
-///     \cgalParamDescription{the number m of eigenpairs of the truncated heat kernel}
+///     \cgalParamDescription{signature diffusion only: the number m of eigenpairs of the truncated heat kernel}
 ///     \cgalParamType{`std::size_t`, positive}
 ///     \cgalParamDefault{`150`}
 ///   \cgalParamNEnd
+///   \cgalParamNBegin{kernel_method, coarse_vertex_count}
+///     \cgalParamDescription{signature diffusion only: how the heat kernel of each iteration is evaluated, and its coarse level (see `Anisotropic_heat_diffusion` and `Edge_weighted_heat_kernel`)}
+///     \cgalParamDefault{`Heat_kernel_method::spectral`; the automatic coarse level}
+///   \cgalParamNEnd
 ///   \cgalParamNBegin{anchor_weight}
-///     \cgalParamDescription{the weight of the positional anchors of the reconstruction (see `reconstruct_from_normal_signature()`): smaller moves the vertices further per iteration}
+///     \cgalParamDescription{signature diffusion only: the weight of the positional anchors of the reconstruction (see `reconstruct_from_normal_signature()`): smaller moves the vertices further per iteration}
 ///     \cgalParamType{`double`, positive and finite}
 ///     \cgalParamDefault{`0.7`}
+///   \cgalParamNEnd
+///   \cgalParamNBegin{progress_callback}
+///     \cgalParamDescription{normal filtering: called after each iteration with the fraction of `number_of_iterations` done; signature diffusion: called during each eigen solve (see `Edge_weighted_heat_kernel`). Returning `false` cancels with a `std::runtime_error`; normal filtering then leaves `tm` unchanged}
+///     \cgalParamType{a callable `bool(double)`, stored in a `std::function<bool(double)>`}
+///     \cgalParamDefault{none}
 ///   \cgalParamNEnd
 ///   \cgalParamNBegin{vertex_point_map}
 ///     \cgalParamDescription{a property map associating points to the vertices of `tm`; the denoised positions are written to it}
@@ -138,7 +392,7 @@ inline std::vector<Eigen::Vector3d> signature_weighted_normals(const Indexed_mes
 ///     \cgalParamDefault{`boost::get(CGAL::vertex_point, tm)`}
 ///   \cgalParamNEnd
 ///   \cgalParamNBegin{vertex_normal_rule}
-///     \cgalParamDescription{how the vertex normals of each iteration's mesh are computed (a `vertex_normal_map` is not used: the normals change with the mesh)}
+///     \cgalParamDescription{how the vertex normals of the NCC are computed (a `vertex_normal_map` is not used: the normals change with the mesh)}
 ///     \cgalParamType{a model of `VertexNormalRule`}
 ///     \cgalParamDefault{`Area_weighted_vertex_normals()`}
 ///   \cgalParamNEnd
@@ -156,16 +410,21 @@ inline std::vector<Eigen::Vector3d> signature_weighted_normals(const Indexed_mes
 ///
 /// \throws std::invalid_argument if a parameter is out of its range (the message names
 ///   it), or on a mesh the package cannot process (see `Normal_controlled_coordinates`),
-///   which a denoising iteration can produce only from an already degenerate input.
-///   `tm` is then left as the previous iteration wrote it.
-/// \throws std::runtime_error if an eigen solve or a factorisation fails.
+///   which a signature diffusion iteration can produce only from an already degenerate
+///   input; `tm` is then left as the previous iteration wrote it.
+/// \throws std::runtime_error if an eigen solve or a factorisation fails (signature
+///   diffusion), or if the `progress_callback` cancels.
 ///
-/// Complexity: per iteration, one edge-weighted heat kernel (a sparse Cholesky
+/// Complexity: normal filtering: linear in the size of `tm` per iteration (parallel
+/// with TBB); with the defaults, 3 to 42 iterations on the meshes of the user manual's
+/// table. Measured in all on a shared 2-core machine, depending on the noise (0.1 to 0.5
+/// mean edge length) and the load: below 0.05 s on the 2775 vertices of `elephant.off`, 0.03 to 0.5 s on the 6475 of
+/// `fandisk.off`, 0.1 to 0.5 s on the 26002 of `armadillo.off`.
+/// Signature diffusion: per iteration, one edge-weighted heat kernel (a sparse Cholesky
 /// factorisation and a Lanczos iteration of \f$ O(n m^2) \f$ dense work: most of the time),
 /// the operator \f$ A_t \f$ (linear in n), k sparse products and one sparse Cholesky
-/// factorisation of the reconstruction. Measured on a shared 2-core machine: 0.4 to
-/// 1.9 s per iteration on the 6475 vertices of `fandisk.off` (depending on the load),
-/// 8 s on the 26002 of `armadillo.off`.
+/// factorisation of the reconstruction: 0.4 to 1.9 s per iteration on the 6475
+/// vertices of `fandisk.off`, 8 s on the 26002 of `armadillo.off`.
 template <typename TriangleMesh, typename NamedParameters = parameters::Default_named_parameters>
 void denoise_mesh(TriangleMesh& tm, const NamedParameters& np = parameters::default_values())
 {
@@ -173,17 +432,33 @@ void denoise_mesh(TriangleMesh& tm, const NamedParameters& np = parameters::defa
   using parameters::get_parameter;
   typedef typename CGAL::GetGeomTraits<TriangleMesh, NamedParameters>::type GeomTraits;
   typedef typename GeomTraits::Vector_3 Vector_3;
+  typedef typename GeomTraits::Point_3 Point_3;
   typedef typename CGAL::internal_np::Lookup_named_param_def<internal_np::vertex_normal_rule_t, NamedParameters,
                                                              Area_weighted_vertex_normals>::type Rule;
   typedef typename boost::graph_traits<TriangleMesh>::vertex_descriptor vertex_descriptor;
 
   // Every parameter is checked before the mesh is touched.
-  const double iterations = double(choose_parameter(get_parameter(np, CGAL::internal_np::number_of_iterations), 2));
+  const Denoising_method method =
+      choose_parameter(get_parameter(np, internal_np::denoising_method), Denoising_method::normal_filtering);
+  if(method != Denoising_method::normal_filtering && method != Denoising_method::signature_diffusion)
+    internal::throw_invalid_input("denoise_mesh: unknown denoising_method");
+  const bool filtering = method == Denoising_method::normal_filtering;
+  const double iterations =
+      double(choose_parameter(get_parameter(np, CGAL::internal_np::number_of_iterations), filtering ? 100 : 2));
   const double sigma = choose_parameter(get_parameter(np, internal_np::sigma), 1.);
   const double time = choose_parameter(get_parameter(np, internal_np::time), 1.);
-  const double steps = double(choose_parameter(get_parameter(np, internal_np::number_of_steps), 1));
+  const double steps = double(choose_parameter(get_parameter(np, internal_np::number_of_steps), filtering ? 2 : 1));
   const double eigenpairs = double(choose_parameter(get_parameter(np, internal_np::number_of_eigenpairs), 150));
   const double anchor_weight = choose_parameter(get_parameter(np, internal_np::anchor_weight), 0.7);
+  const Heat_kernel_method kernel_method =
+      choose_parameter(get_parameter(np, internal_np::kernel_method), Heat_kernel_method::spectral);
+  // -1: the automatic choice of Edge_weighted_heat_kernel.
+  const double coarse_vertex_count = double(choose_parameter(get_parameter(np, internal_np::coarse_vertex_count), -1));
+  const double user_normal_sigma = choose_parameter(get_parameter(np, internal_np::normal_sigma), 0.);
+  const bool automatic_normal_sigma = parameters::is_default_parameter<NamedParameters, internal_np::normal_sigma_t>::value;
+  const double displacement_limit = choose_parameter(get_parameter(np, internal_np::displacement_limit), 1.1);
+  const std::function<bool(double)> progress =
+      choose_parameter(get_parameter(np, internal_np::progress_callback), std::function<bool(double)>());
   if(!(iterations >= 0) || !std::isfinite(iterations))
     internal::throw_invalid_input("denoise_mesh: number_of_iterations must not be negative");
   if(!(sigma > 0))
@@ -196,7 +471,11 @@ void denoise_mesh(TriangleMesh& tm, const NamedParameters& np = parameters::defa
     internal::throw_invalid_input("denoise_mesh: number_of_eigenpairs must be positive");
   if(!(anchor_weight > 0) || !std::isfinite(anchor_weight))
     internal::throw_invalid_input("denoise_mesh: anchor_weight must be positive and finite");
-  if(num_vertices(tm) == 0)
+  if(!automatic_normal_sigma && (!(user_normal_sigma > 0) || !std::isfinite(user_normal_sigma)))
+    internal::throw_invalid_input("denoise_mesh: normal_sigma must be positive and finite");
+  if(!(displacement_limit > 0))
+    internal::throw_invalid_input("denoise_mesh: displacement_limit must be positive");
+  if(num_vertices(tm) == 0 || iterations < 1)
     return;
 
   auto vpm = choose_parameter(get_parameter(np, CGAL::internal_np::vertex_point),
@@ -208,6 +487,56 @@ void denoise_mesh(TriangleMesh& tm, const NamedParameters& np = parameters::defa
       parameters::combine(CGAL::parameters::vertex_point_map(vpm).vertex_index_map(vim).geom_traits(gt),
                           parameters::vertex_normal_rule(rule));
 
+  if(filtering)
+  {
+    // All work in the normalised frame of the indexed mesh: every quantity below is
+    // invariant under rigid motions and uniform scaling.
+    const Normal_controlled_coordinates<TriangleMesh, GeomTraits> ncc(tm, mesh_parameters);
+    const internal::Indexed_mesh& mesh = ncc.indexed_mesh();
+    const std::size_t n = mesh.number_of_vertices();
+    const double noise = internal::estimated_noise_level(mesh, ncc.data());
+    const internal::Face_adjacency adjacency = internal::make_face_adjacency(mesh);
+
+    std::vector<Eigen::Vector3d> points = mesh.points, face_normals, centroids;
+    std::vector<double> areas;
+    internal::face_geometry(mesh, points, face_normals, areas, centroids);
+    double centroid_distance = 0, edge_length = 0;
+    for(const auto& fg : adjacency.edge_adjacent_faces)
+      centroid_distance += (centroids[fg.first] - centroids[fg.second]).norm();
+    for(std::size_t i = 0; i < n; ++i)
+      for(std::size_t k = mesh.fan_begin[i]; k < mesh.fan_begin[i + 1]; ++k)
+        edge_length += (mesh.points[mesh.fan[k]] - mesh.points[i]).norm();
+    edge_length /= double(mesh.fan.size());
+    if(adjacency.edge_adjacent_faces.empty())
+      centroid_distance = edge_length;
+    else
+      centroid_distance /= double(adjacency.edge_adjacent_faces.size());
+    const double normal_sigma = automatic_normal_sigma ? (std::max)(0.4, 1.6 * noise / edge_length) : user_normal_sigma;
+
+    for(std::size_t iteration = 0; iteration < std::size_t(iterations); ++iteration)
+    {
+      internal::face_geometry(mesh, points, face_normals, areas, centroids);
+      for(std::size_t step = 0; step < std::size_t(steps); ++step)
+        internal::diffuse_face_normals(adjacency, areas, centroids, centroid_distance, normal_sigma, face_normals);
+      internal::fit_vertices_to_normals(mesh, adjacency, face_normals, 5, points);
+      double squares = 0;
+      for(std::size_t i = 0; i < n; ++i)
+        squares += (points[i] - mesh.points[i]).squaredNorm();
+      if(std::sqrt(squares / double(n)) >= displacement_limit * noise)
+        break;
+      if(progress && !progress(double(iteration + 1) / iterations))
+        throw std::runtime_error("CGAL::Heat_diffusion: denoise_mesh: cancelled by the progress callback");
+    }
+    for(vertex_descriptor v : vertices(tm))
+    {
+      const Eigen::Vector3d x = mesh.to_user_frame(points[ncc.vertex_index(v)]);
+      if(x.allFinite())
+        put(vpm, v, Point_3(x.x(), x.y(), x.z()));
+    }
+    return;
+  }
+
+  // The paper's pipeline (Denoising_method::signature_diffusion).
   auto target_signature = get(CGAL::dynamic_vertex_property_t<double>(), tm);
   auto target_normals = get(CGAL::dynamic_vertex_property_t<Vector_3>(), tm);
   for(std::size_t iteration = 0; iteration < std::size_t(iterations); ++iteration)
@@ -215,9 +544,11 @@ void denoise_mesh(TriangleMesh& tm, const NamedParameters& np = parameters::defa
     // 1. The kernel of the current mesh, and its Normal Signature diffused.
     const Anisotropic_heat_diffusion<TriangleMesh, GeomTraits> diffusion(
         tm, parameters::combine(mesh_parameters, parameters::sigma(sigma), parameters::time(time),
-                                parameters::number_of_eigenpairs(std::size_t(eigenpairs))));
-    const Normal_controlled_coordinates<TriangleMesh, GeomTraits>& ncc =
-        diffusion.heat_kernel().normal_controlled_coordinates();
+                                parameters::number_of_eigenpairs(std::size_t(eigenpairs)),
+                                parameters::kernel_method(kernel_method),
+                                parameters::coarse_vertex_count(coarse_vertex_count),
+                                parameters::progress_callback(progress)));
+    const Normal_controlled_coordinates<TriangleMesh, GeomTraits>& ncc = diffusion.normal_controlled_coordinates();
     const internal::Ncc_data& data = ncc.data();
     const Eigen::VectorXd signature =
         diffusion.diffuse(Eigen::Map<const Eigen::VectorXd>(data.signature.data(), Eigen::Index(data.signature.size())),
