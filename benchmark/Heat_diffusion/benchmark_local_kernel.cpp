@@ -5,7 +5,8 @@
 //
 // Table 1: on fandisk and armadillo, t = 1: the time to A_t from the mesh with each
 //          kernel (NCC, L, B, then the eigen solve and A_t, or the local columns and
-//          A_t), their ratio, and the heat regions.
+//          A_t), their ratio (wall clock, and CPU time of all threads), and the heat
+//          regions.
 // Table 2: scaling in n: armadillo Loop-subdivided (CGAL::Subdivision_method_3) at run
 //          time to about 100k, 400k and 1.6M vertices; end to end from the mesh to the
 //          diffused Normal Signature at k = 10 with the local kernel (NCC, operators,
@@ -15,7 +16,7 @@
 // Usage: benchmark_local_kernel [DATA_DIR] [--levels L] [--first-level F] [--no-table-1]
 //                               [--time T] [--sigma S]
 //   L (default 3): Loop subdivision levels of table 2 (3 gives 1.6M vertices: minutes);
-//   F (default 0): the first level of table 2.
+//   F (default 0): the first level of table 2 (L = -1 skips table 2).
 // Wall-clock times of single runs: the eigen solve and the large meshes take seconds
 // to minutes, and the machine may be shared, so compare within a run.
 
@@ -51,6 +52,16 @@ double seconds_since(std::chrono::steady_clock::time_point start)
   return std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
 }
 
+// CPU seconds of the process so far (all threads): less sensitive than the wall clock
+// to the other jobs on a shared machine.
+double cpu_seconds()
+{
+  rusage usage;
+  getrusage(RUSAGE_SELF, &usage);
+  return double(usage.ru_utime.tv_sec + usage.ru_stime.tv_sec) +
+         1e-6 * double(usage.ru_utime.tv_usec + usage.ru_stime.tv_usec);
+}
+
 double peak_memory_gib()
 {
   rusage usage;
@@ -82,28 +93,33 @@ void compare_kernels(const std::string& data, double t, double sigma)
   std::printf("\nTable 1: time to A_t from the mesh, t = %g, sigma = %g, m = 150 (%u threads)\n", t, sigma,
               std::thread::hardware_concurrency());
   std::printf("| mesh | n | spectral: NCC + L, B + eigen solve | + A_t | total s | local: NCC + L, B + A_t s |"
-              " spectral / local | regions spectral min/mean/max (collapsed) | local |\n|---|---|---|---|---|---|---|---|---|\n");
+              " spectral / local | CPU s spectral / local (ratio) | regions spectral min/mean/max (collapsed) | local |\n"
+              "|---|---|---|---|---|---|---|---|---|---|\n");
   for(const char* name : {"fandisk.off", "armadillo.off"})
   {
     const Mesh mesh = load(data + "/" + name);
     const auto sigma_parameter = HD::parameters::sigma(sigma);
+    double cpu = cpu_seconds();
     auto start = std::chrono::steady_clock::now();
     const Heat_kernel kernel(mesh, HD::parameters::combine(sigma_parameter, HD::parameters::number_of_eigenpairs(150)));
     const double eigen_seconds = seconds_since(start);
     start = std::chrono::steady_clock::now();
     const Diffusion spectral(kernel, t);
     const double operator_seconds = seconds_since(start);
+    const double spectral_cpu = cpu_seconds() - cpu;
+    cpu = cpu_seconds();
     start = std::chrono::steady_clock::now();
     const Diffusion local(mesh, HD::parameters::combine(sigma_parameter, HD::parameters::time(t),
                                                         HD::parameters::kernel_method(HD::Heat_kernel_method::local)));
     const double local_seconds = seconds_since(start);
+    const double local_cpu = cpu_seconds() - cpu;
     benchmark_sink = spectral.operator_matrix().sum() + local.operator_matrix().sum();
     const auto& a = spectral.region_statistics();
     const auto& b = local.region_statistics();
-    std::printf("| %s | %zu | %.2f | %.3f | %.2f | %.2f | %.2f | %zu / %.1f / %zu (%zu) | %zu / %.1f / %zu (%zu) |\n", name,
-                std::size_t(mesh.number_of_vertices()), eigen_seconds, operator_seconds,
+    std::printf("| %s | %zu | %.2f | %.3f | %.2f | %.2f | %.2f | %.2f / %.2f (%.2f) | %zu / %.1f / %zu (%zu) | %zu / %.1f / %zu (%zu) |\n",
+                name, std::size_t(mesh.number_of_vertices()), eigen_seconds, operator_seconds,
                 eigen_seconds + operator_seconds, local_seconds, (eigen_seconds + operator_seconds) / local_seconds,
-                a.min_size, a.mean_size, a.max_size, a.collapsed_regions, b.min_size, b.mean_size, b.max_size,
+                spectral_cpu, local_cpu, spectral_cpu / local_cpu, a.min_size, a.mean_size, a.max_size, a.collapsed_regions, b.min_size, b.mean_size, b.max_size,
                 b.collapsed_regions);
     std::fflush(stdout);
   }

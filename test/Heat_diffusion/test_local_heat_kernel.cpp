@@ -20,6 +20,7 @@
 #include "test_support.h"
 
 #include <algorithm>
+#include <cmath>
 #include <limits>
 #include <map>
 #include <stdexcept>
@@ -78,6 +79,43 @@ Eigen::VectorXd local_column(const HD::internal::Local_heat_kernel& kernel, std:
   return column;
 }
 
+// The rational approximation behind the local kernel: r(x) ~ exp(-x) uniformly on
+// [0, inf) (up to 1e6, and its limit 0 at infinity); and the clusters of sources: a
+// partition of the vertices into compact groups.
+void check_rational_approximation_and_clusters()
+{
+  double worst = 0;
+  for(int e = -8000; e <= 6000; ++e)
+  {
+    const double x = e == -8000 ? 0. : std::pow(10., e / 1000.);
+    worst = (std::max)(worst, std::abs(HD::internal::rational_exponential(x) - std::exp(-x)));
+  }
+  std::cout << "rational approximation of exp(-x) on [0, 1e6]: max error " << worst << std::endl;
+  CHECK_MESSAGE(worst <= 2e-6, "rational approximation error " << worst);
+  CHECK(std::abs(HD::internal::rational_exponential(1e12)) < 1e-11);
+
+  const Mesh mesh = test_support::load<Mesh>("fandisk.off");
+  const HD::Normal_controlled_coordinates<Mesh> ncc(mesh);
+  const HD::internal::Indexed_mesh& indexed = ncc.indexed_mesh();
+  std::vector<std::size_t> begin;
+  const std::vector<std::size_t> order = HD::internal::clustered_order(indexed, 32, &begin);
+  std::vector<std::size_t> sorted = order;
+  std::sort(sorted.begin(), sorted.end());
+  bool permutation = sorted.size() == indexed.number_of_vertices();
+  for(std::size_t i = 0; permutation && i < sorted.size(); ++i)
+    permutation = sorted[i] == i;
+  CHECK_MESSAGE(permutation, "clustered_order is not a permutation of the vertices");
+  CHECK(begin.front() == 0 && begin.back() == order.size());
+  std::size_t largest = 0;
+  for(std::size_t c = 0; c + 1 < begin.size(); ++c)
+    largest = (std::max)(largest, begin[c + 1] - begin[c]);
+  CHECK_MESSAGE(largest <= 32, "cluster of " << largest << " vertices");
+  std::cout << "fandisk: " << begin.size() - 1 << " clusters of at most 32 vertices, mean "
+            << double(order.size()) / double(begin.size() - 1) << std::endl;
+  CHECK(HD::internal::breadth_first_order(indexed) ==
+        HD::internal::clustered_order(indexed, HD::internal::default_local_cluster_size));
+}
+
 // The heat region of v_j (NOTES 8): grown breadth first from v_j through the vertices
 // where the column is above tau(t).
 std::size_t region_size(const HD::internal::Indexed_mesh& mesh, std::size_t j, const Eigen::VectorXd& column, double t)
@@ -126,7 +164,7 @@ void check_columns(const std::string& name, double sigma)
                                                  HD::internal::Local_kernel_mass::lumped);
     auto workspace = local.make_workspace();
     double reference_error = 0, local_error = 0, lumped_error = 0, truncated_error = 0, truncated_min = 1e300;
-    std::size_t patch_min = n, patch_max = 0, krylov_max = 0, exact_region_min = n, exact_region_max = 0;
+    std::size_t patch_min = n, patch_max = 0, enlargements_max = 0, exact_region_min = n, exact_region_max = 0;
     std::size_t region_mismatch = 0;
     for(std::size_t s = 0; s < sources.size(); ++s)
     {
@@ -136,7 +174,7 @@ void check_columns(const std::string& name, double sigma)
       local_error = (std::max)(local_error, relative_error(local_column(local, j, n, workspace), exact));
       patch_min = (std::min)(patch_min, workspace.patch.size());
       patch_max = (std::max)(patch_max, workspace.patch.size());
-      krylov_max = (std::max)(krylov_max, workspace.krylov_dimension);
+      enlargements_max = (std::max)(enlargements_max, workspace.enlargements);
       lumped_error = (std::max)(lumped_error, relative_error(local_column(lumped, j, n, workspace), exact));
       Eigen::VectorXd truncated(static_cast<Eigen::Index>(n));
       for(std::size_t i = 0; i < n; ++i)
@@ -152,10 +190,20 @@ void check_columns(const std::string& name, double sigma)
       exact_region_min = (std::min)(exact_region_min, region);
       exact_region_max = (std::max)(exact_region_max, region);
     }
+    // a column depends on its cluster only, not on what the workspace computed before
+    // (the parallel construction of A_t relies on it): bit-identical in a fresh one
+    for(std::size_t s = 0; s < sources.size(); ++s)
+    {
+      const Eigen::VectorXd reused = local_column(local, sources[s], n, workspace);
+      auto fresh_workspace = local.make_workspace();
+      const Eigen::VectorXd fresh = local_column(local, sources[s], n, fresh_workspace);
+      CHECK_MESSAGE((reused - fresh).cwiseAbs().maxCoeff() == 0, label << ", t = " << t << ": column " << sources[s]
+                                                                 << " depends on the workspace's history");
+    }
     std::cout << label << ", t = " << t << ": column error, local " << local_error << ", lumped mass "
               << lumped_error << ", truncated m = 150 " << truncated_min << " .. " << truncated_error
               << " (reference error <= " << reference_error << "); patches " << patch_min << " .. " << patch_max
-              << " vertices, Krylov dimension <= " << krylov_max << ", exact heat regions " << exact_region_min
+              << " vertices, patch enlargements <= " << enlargements_max << ", exact heat regions " << exact_region_min
               << " .. " << exact_region_max << std::endl;
     CHECK_MESSAGE(reference_error <= 1e-4, label << ", t = " << t << ": the reference is off by " << reference_error);
     CHECK_MESSAGE(local_error <= 1e-3, label << ", t = " << t << ": local kernel error " << local_error);
@@ -261,6 +309,7 @@ int main()
 {
   try
   {
+    check_rational_approximation_and_clusters();
     check_columns("fandisk.off", 1.);
     check_columns("fandisk.off", 0.1);
     check_columns("armadillo.off", 1.);

@@ -3,7 +3,8 @@
 //
 // The edge-weighted heat kernel without eigenpairs and without truncation of the
 // spectrum: each column h_t(., j) = [exp(-t B^-1 L) B^-1] e_j is computed on a patch
-// grown around v_j, by a Krylov subspace method.
+// grown around v_j, by a rational approximation of the exponential whose shifted patch
+// matrices are factorised once for a cluster of neighbouring sources.
 
 #ifndef CGAL_HEAT_DIFFUSION_INTERNAL_LOCAL_HEAT_KERNEL_H
 #define CGAL_HEAT_DIFFUSION_INTERNAL_LOCAL_HEAT_KERNEL_H
@@ -11,16 +12,16 @@
 #include <CGAL/Heat_diffusion/internal/Indexed_mesh.h>
 
 #include <Eigen/Core>
-#include <Eigen/Eigenvalues>
+#include <Eigen/OrderingMethods>
 #include <Eigen/Sparse>
-#include <Eigen/SparseCholesky>
 
 #include <algorithm>
+#include <array>
 #include <cmath>
 #include <cstdint>
 #include <limits>
-#include <memory>
 #include <stdexcept>
+#include <type_traits>
 #include <utility>
 #include <vector>
 
@@ -28,33 +29,109 @@ namespace CGAL {
 namespace Heat_diffusion {
 namespace internal {
 
-// The vertices in breadth-first order, one connected component after the other:
-// consecutive entries are close on the mesh.
-inline std::vector<std::size_t> breadth_first_order(const Indexed_mesh& mesh)
+// The rational approximation of exp(-x) on [0, inf) used by the local kernel:
+//   exp(-x) ~ sum_k Re( a_k / (-x - z_k) ),
+// one term per pole z_k with Im z_k >= 0 (its conjugate is accounted for by the real
+// part). The poles are those of the Caratheodory-Fejer approximation of type (6, 6)
+// (Trefethen, Weideman and Schmelzer 2006), the residues a_k a least-squares fit with
+// Lawson weights without a constant term, so that r(inf) = 0. Maximum error on
+// [0, inf): 1.5e-6 (checked by test_local_heat_kernel).
+struct Exponential_pole
+{
+  double pole_real, pole_imag, residue_real, residue_imag;
+};
+
+inline const std::array<Exponential_pole, 3>& exponential_poles()
+{
+  static const std::array<Exponential_pole, 3> poles = {{
+      {2.40060293892545, 1.1931293084021366, -1.1587937012299794314, -8.5730404167499296624},
+      {-1.7819882759326164, 6.196512467349581, -0.16700572322229976563, -0.213022846594453875},
+      {1.1585525717103486, 3.614772600820088, 1.3265003633611509662, 2.9033265650419489995}}};
+  return poles;
+}
+
+// r(x) of exponential_poles(), for tests.
+inline double rational_exponential(double x)
+{
+  double sum = 0;
+  for(const Exponential_pole& p : exponential_poles())
+  {
+    // Re(a / w), w = -x - z
+    const double wr = -x - p.pole_real, wi = -p.pole_imag;
+    sum += (p.residue_real * wr + p.residue_imag * wi) / (wr * wr + wi * wi);
+  }
+  return sum;
+}
+
+// The vertices partitioned into compact clusters of at most `cluster_size` vertices:
+// seeds taken in breadth-first order, each cluster grown breadth first from its seed
+// through the vertices not yet taken. Returns the clusters one after the other, and
+// in `begin` (if given) where each starts (with the end as last entry).
+inline std::vector<std::size_t> clustered_order(const Indexed_mesh& mesh, std::size_t cluster_size,
+                                                std::vector<std::size_t>* begin = nullptr)
 {
   const std::size_t n = mesh.number_of_vertices();
-  std::vector<std::size_t> order;
-  order.reserve(n);
+  // breadth-first order of the whole mesh, one component after the other
+  std::vector<std::size_t> bfs;
+  bfs.reserve(n);
   std::vector<unsigned char> seen(n, 0);
   for(std::size_t s = 0; s < n; ++s)
   {
     if(seen[s])
       continue;
     seen[s] = 1;
-    std::size_t q = order.size();
-    order.push_back(s);
-    for(; q < order.size(); ++q)
+    std::size_t q = bfs.size();
+    bfs.push_back(s);
+    for(; q < bfs.size(); ++q)
     {
-      const std::size_t i = order[q];
+      const std::size_t i = bfs[q];
       for(std::size_t k = mesh.fan_begin[i]; k < mesh.fan_begin[i + 1]; ++k)
         if(!seen[mesh.fan[k]])
         {
           seen[mesh.fan[k]] = 1;
+          bfs.push_back(mesh.fan[k]);
+        }
+    }
+  }
+  std::vector<std::size_t> order;
+  order.reserve(n);
+  if(begin != nullptr)
+    begin->clear();
+  std::vector<unsigned char> taken(n, 0);
+  std::vector<std::size_t> touched;
+  std::fill(seen.begin(), seen.end(), 0);
+  for(std::size_t seed : bfs)
+  {
+    if(taken[seed])
+      continue;
+    if(begin != nullptr)
+      begin->push_back(order.size());
+    const std::size_t first = order.size();
+    taken[seed] = 1;
+    order.push_back(seed);
+    for(std::size_t q = first; q < order.size() && order.size() - first < cluster_size; ++q)
+    {
+      const std::size_t i = order[q];
+      for(std::size_t k = mesh.fan_begin[i]; k < mesh.fan_begin[i + 1] && order.size() - first < cluster_size; ++k)
+        if(!taken[mesh.fan[k]])
+        {
+          taken[mesh.fan[k]] = 1;
           order.push_back(mesh.fan[k]);
         }
     }
   }
+  if(begin != nullptr)
+    begin->push_back(order.size());
   return order;
+}
+
+// Sources in the order the local kernel works best: its clusters one after the other,
+// so that consecutive sources share their patch factorisations.
+constexpr std::size_t default_local_cluster_size = 32;
+
+inline std::vector<std::size_t> breadth_first_order(const Indexed_mesh& mesh)
+{
+  return clustered_order(mesh, default_local_cluster_size);
 }
 
 // Which mass matrix the local kernel uses. `consistent` is the FEM mass matrix B of
@@ -64,72 +141,95 @@ inline std::vector<std::size_t> breadth_first_order(const Indexed_mesh& mesh)
 // the package uses `consistent`; `lumped` is kept to measure that difference.
 enum class Local_kernel_mass { consistent, lumped };
 
-// Columns of the heat kernel H_t = exp(-t B^-1 L) B^-1 of the pencil (L, B), one source
-// at a time, without eigenpairs and without truncating the spectrum.
+// Columns of the heat kernel H_t = exp(-t B^-1 L) B^-1 of the pencil (L, B), without
+// eigenpairs and without truncating the spectrum.
 //
 // Locality. On the surface rescaled to area = n, the column of v_j decays like a
 // Gaussian of the distance to v_j: for t = 1 it is above 1e-4 of its peak on a few
 // hundred vertices only, whatever the size of the mesh. The column is computed on a
-// patch P around v_j with a zero (absorbing) condition outside: a ball of the metric of
-// diffusion_length(), whose radius grows with sqrt(t ln(1/tolerance)). The heat lost
-// through the border of the patch measures the truncation: the exact column carries
-// the total heat 1^T B h = 1, so |1 - 1^T B_P h_P| is checked against the tolerance and
-// the patch is enlarged until it passes (where the sampling changes fast, say).
+// patch P around v_j with a zero (absorbing) condition outside, containing the ball of
+// the metric of diffusion_length() whose radius grows with sqrt(t ln(1/tolerance)).
+// The heat lost through the border of the patch measures the truncation: the exact
+// column carries the total heat 1^T B h = 1, so |1 - 1^T B_P h_P| is checked against
+// the tolerance and the patch (of the whole cluster, below) is enlarged until every
+// column passes (where the sampling changes fast, say).
 //
-// Krylov subspace. B^-1 L is self-adjoint in the inner product of B, so Lanczos in that
-// inner product, started from B_P^-1 e_j, gives a B_P-orthonormal V and a tridiagonal
-// T = V^T L_P V with h_P ~ |B_P^-1 e_j|_B V exp(-tT) e_1. Each step solves with B_P,
-// through a sparse Cholesky factorisation of the patch. (Krylov subspaces of cheaper
-// operators -- the lumped M^-1 L, or B^-1 replaced by a few Chebyshev or Neumann
-// terms -- projected on the consistent pencil, stall at 1e-4 to 5e-3: the consistent
-// kernel is not a function of those operators on an irregular mesh.) No
-// reorthogonalisation: Lanczos approximations of f(A) b are stable under the loss of
-// orthogonality (Druskin and Knizhnerman 1991; Musco, Musco and Sidford 2018). The
-// subspace grows until the coefficients of the newest vectors fall below the tolerance.
+// Rational approximation. With r(x) = sum_k Re(a_k / (-x - z_k)) ~ exp(-x)
+// (exponential_poles(), uniform error 1.5e-6 on [0, inf)),
+//   h_P = r(t B_P^-1 L_P) B_P^-1 e_j = - sum_k Re( a_k (t L_P + z_k B_P)^-1 e_j ):
+// three complex symmetric sparse solves per column, no iteration, no convergence test.
+// t L_P + z_k B_P has a definite imaginary part (Im z_k B_P), so its LDL^T
+// factorisation without pivoting exists and is stable; it is computed in complex
+// arithmetic by a simplicial up-looking LDL^T (after Davis's LDL) with an AMD ordering.
 //
-// Cost per column: a sparse factorisation of the p x p patch and k steps of O(p)
-// (k = 20 to 30 at t = 1); p grows like t, k like sqrt(t). Linear in n for fixed t.
+// Clusters. The sources are partitioned into compact clusters of about 32 vertices
+// (clustered_order()); one patch, the union of the balls of its sources, serves the
+// whole cluster: one ordering, one symbolic analysis and three numeric factorisations
+// per cluster, and the cluster's columns solved together as a block (contiguous rows,
+// vectorised). A workspace keeps the last cluster's columns, so the sources should
+// come cluster after cluster (breadth_first_order()). A column depends only on its
+// cluster, never on the order of the calls or on the thread: sequential and parallel
+// runs give identical results.
+//
+// Cost per cluster of c sources: a patch of p ~ (sqrt(c) + radius)^2 vertices, three
+// complex factorisations of it, and 3 c complex forward and back substitutions with
+// the factor; p grows like t. Linear in n for fixed t.
 class Local_heat_kernel
 {
 public:
   typedef Eigen::SparseMatrix<double> Sparse_matrix;
 
-  // The relative accuracy aimed at by default: heat lost through the patch border, and
-  // size of the newest Krylov coefficients, relative to the column.
+  // The relative accuracy aimed at by default: heat lost through the patch border,
+  // relative to the column's heat.
   static constexpr double default_tolerance = 1e-4;
 
-  // Everything one column needs, allocated once per thread and reused: the arrays of
-  // size n are stamped with a generation instead of being cleared for every source.
+  static constexpr std::uint32_t not_in_patch = (std::numeric_limits<std::uint32_t>::max)();
+  static constexpr std::size_t no_cluster = (std::numeric_limits<std::size_t>::max)();
+
+  // Everything a cluster needs, allocated once per thread and reused: the arrays of
+  // size n are stamped with a generation instead of being cleared for every patch.
   struct Workspace
   {
-    std::vector<std::uint32_t> stamp;  // == generation: the vertex was reached for this source
+    std::vector<std::uint32_t> stamp;  // == generation: the vertex was reached for this patch
     std::vector<std::uint32_t> local;  // its row in the patch (or not_in_patch)
     std::vector<double> distance;      // tentative Dijkstra distance
     std::uint32_t generation = 0;
 
-    std::vector<std::uint32_t> patch;  // global indices of the patch, the source first
+    std::vector<std::uint32_t> patch;  // global indices of the patch
     std::vector<std::pair<double, std::uint32_t> > heap;
-    std::vector<Eigen::Triplet<double> > entries;
-    Sparse_matrix stiffness, mass;     // L_P and B_P
-    Eigen::VectorXd lumped_mass;       // diag(B 1) on the patch (the global row sums)
-    std::unique_ptr<Eigen::SimplicialLDLT<Sparse_matrix, Eigen::Lower, Eigen::AMDOrdering<int> > > cholesky;
 
-    Eigen::MatrixXd basis, mass_times_basis;  // V and B_P V, p x capacity
-    std::vector<double> alpha, beta;
-    Eigen::VectorXd work, coefficients;
-    std::vector<double> values;               // the column on the patch
+    // the patch matrices, full symmetric pattern in compressed columns
+    std::vector<int> column_begin, row;
+    std::vector<double> stiffness_value, mass_value, patch_heat;  // L_P, B_P, B_P 1
 
-    // What the last column needed (for statistics and tests).
-    std::size_t krylov_dimension = 0;
+    // ordering and LDL^T
+    std::vector<int> permutation, inverse_permutation;  // new -> old, old -> new
+    std::vector<int> parent, factor_begin, factor_count, flag, pattern, factor_row;
+    std::vector<double> factor_real, factor_imag, diagonal_real, diagonal_imag, y_real, y_imag;
+    Eigen::SparseMatrix<double, Eigen::ColMajor, int> ordering_pattern;
+    std::vector<double> block_real, block_imag;        // p x c right-hand sides, row-major
+    std::vector<unsigned char> row_is_nonzero;
+
+    // the last cluster, and the kernel that computed it
+    const void* owner = nullptr;
+    std::size_t cluster = no_cluster;
+    bool whole_component = false;
+    Eigen::MatrixXd columns;        // p x c, the cluster's columns on its patch
+    std::vector<double> deficits;   // |1 - 1^T B_P h| of each
+
+    std::vector<double> values;     // the column on the patch
+
+    // What the last column needed (for statistics and tests): the size of its cluster,
+    // the enlargements of the cluster's patch, and the column's heat deficit.
+    std::size_t cluster_size = 0;
     std::size_t enlargements = 0;
     double heat_deficit = 0;
   };
 
-  static constexpr std::uint32_t not_in_patch = (std::numeric_limits<std::uint32_t>::max)();
-
   Local_heat_kernel(const Indexed_mesh& mesh, const Sparse_matrix& stiffness, const Sparse_matrix& mass,
                     double time, double tolerance = default_tolerance,
-                    Local_kernel_mass mass_kind = Local_kernel_mass::consistent)
+                    Local_kernel_mass mass_kind = Local_kernel_mass::consistent,
+                    std::size_t cluster_size = default_local_cluster_size)
     : mesh_(mesh), stiffness_(stiffness), mass_(mass), time_(time), tolerance_(tolerance), mass_kind_(mass_kind)
   {
     const std::size_t n = mesh.number_of_vertices();
@@ -144,6 +244,29 @@ public:
     const double log_tolerance = std::log(1. / tolerance);
     initial_radius_ = (std::max)(radius_factor * std::sqrt(time * log_tolerance),
                                  log_tolerance / std::log(2. + std::sqrt(3.)));
+    // the graph of L with the edge lengths of diffusion_length(), for Dijkstra
+    neighbour_begin_.assign(1, 0);
+    for(Eigen::Index i = 0; i < stiffness.outerSize(); ++i)
+    {
+      for(Sparse_matrix::InnerIterator it(stiffness, i); it; ++it)
+        if(it.row() != i)
+        {
+          neighbour_.push_back(std::uint32_t(it.row()));
+          edge_length_.push_back(diffusion_length(std::size_t(i), std::size_t(it.row())));
+        }
+      neighbour_begin_.push_back(neighbour_.size());
+    }
+    std::vector<std::size_t> begin;
+    cluster_order_ = clustered_order(mesh, (std::max)(cluster_size, std::size_t(1)), &begin);
+    cluster_begin_.assign(begin.begin(), begin.end());
+    cluster_of_.assign(n, 0);
+    position_in_cluster_.assign(n, 0);
+    for(std::size_t c = 0; c + 1 < begin.size(); ++c)
+      for(std::size_t a = begin[c]; a < begin[c + 1]; ++a)
+      {
+        cluster_of_[cluster_order_[a]] = std::uint32_t(c);
+        position_in_cluster_[cluster_order_[a]] = std::uint32_t(a - begin[c]);
+      }
   }
 
   double time() const { return time_; }
@@ -156,7 +279,6 @@ public:
     w.stamp.assign(n, 0);
     w.local.assign(n, not_in_patch);
     w.distance.assign(n, 0.);
-    w.cholesky = std::make_unique<typename decltype(w.cholesky)::element_type>();
     return w;
   }
 
@@ -164,18 +286,30 @@ public:
   // (0 outside the patch), and w.patch / w.values list the patch.
   void compute_column(std::size_t j, Workspace& w) const
   {
-    double radius = initial_radius_;
-    w.enlargements = 0;
-    for(;;)
+    const std::size_t c = cluster_of_[j];
+    if(w.cluster != c || w.owner != this)
     {
-      grow_patch(j, radius, w);
-      const bool whole_component = w.heap.empty();
-      solve_on_patch(w);
-      if(w.heat_deficit <= tolerance_ || whole_component)
-        return;
-      radius *= 1.25;
-      ++w.enlargements;
+      w.owner = this;
+      w.cluster = c;
+      const std::size_t* sources = cluster_order_.data() + cluster_begin_[c];
+      const std::size_t count = cluster_begin_[c + 1] - cluster_begin_[c];
+      // The patch is enlarged (for the whole cluster: the columns then depend on the
+      // cluster only) until every column passes the heat balance, or the patch is the
+      // whole component.
+      double radius = initial_radius_;
+      w.enlargements = 0;
+      for(;;)
+      {
+        compute_cluster(sources, count, radius, w);
+        if(w.whole_component || *std::max_element(w.deficits.begin(), w.deficits.end()) <= tolerance_)
+          break;
+        radius *= 1.25;
+        ++w.enlargements;
+      }
     }
+    const Eigen::Index s = Eigen::Index(position_in_cluster_[j]);
+    w.heat_deficit = w.deficits[std::size_t(s)];
+    w.values.assign(w.columns.col(s).data(), w.columns.col(s).data() + w.columns.rows());
   }
 
   static double value(const Workspace& w, std::size_t i)
@@ -206,9 +340,10 @@ private:
     }
   }
 
-  // The patch: the vertices at distance <= radius from j (Dijkstra over the edges of L),
-  // in the order they are reached. Leaves the heap empty iff no vertex is left outside.
-  void grow_patch(std::size_t j, double radius, Workspace& w) const
+  // The patch: the vertices at distance <= radius from one of the sources (Dijkstra
+  // over the edges of L), in the order they are reached. Returns true iff no vertex of
+  // their component is left outside.
+  bool grow_patch(const std::size_t* sources, std::size_t count, double radius, Workspace& w) const
   {
     next_generation(w);
     w.patch.clear();
@@ -227,7 +362,8 @@ private:
       w.heap.emplace_back(-d, std::uint32_t(i));
       std::push_heap(w.heap.begin(), w.heap.end());
     };
-    reach(j, 0.);
+    for(std::size_t s = 0; s < count; ++s)
+      reach(sources[s], 0.);
     while(!w.heap.empty())
     {
       const double d = -w.heap.front().first;
@@ -240,142 +376,326 @@ private:
         continue;  // a stale entry
       w.local[i] = std::uint32_t(w.patch.size());
       w.patch.push_back(std::uint32_t(i));
-      for(Sparse_matrix::InnerIterator it(stiffness_, Eigen::Index(i)); it; ++it)
+      for(std::size_t q = neighbour_begin_[i]; q < neighbour_begin_[i + 1]; ++q)
       {
-        const std::size_t k = std::size_t(it.row());
-        if(k != i && (w.stamp[k] != w.generation || w.local[k] == not_in_patch))
-          reach(k, d + diffusion_length(i, k));
+        const std::size_t k = neighbour_[q];
+        if(w.stamp[k] != w.generation || w.local[k] == not_in_patch)
+          reach(k, d + edge_length_[q]);
       }
     }
+    return w.heap.empty();
   }
 
-  // L_P and B_P: the rows and columns of the patch (a zero condition outside).
+  bool in_patch(const Workspace& w, std::size_t k) const
+  {
+    return w.stamp[k] == w.generation && w.local[k] != not_in_patch;
+  }
+
+  // L_P and B_P on the union of their patterns (a zero condition outside), and the
+  // patch heat weights B_P 1.
   void extract_patch_matrices(Workspace& w) const
   {
-    const Eigen::Index p = Eigen::Index(w.patch.size());
-    w.lumped_mass.resize(p);
-    for(int pass = 0; pass < 2; ++pass)
+    const std::size_t p = w.patch.size();
+    w.column_begin.assign(1, 0);
+    w.row.clear();
+    w.stiffness_value.clear();
+    w.mass_value.clear();
+    w.patch_heat.assign(p, 0.);
+    const bool lumped = mass_kind_ == Local_kernel_mass::lumped;
+    for(std::size_t a = 0; a < p; ++a)
     {
-      const Sparse_matrix& global = pass == 0 ? stiffness_ : mass_;
-      w.entries.clear();
-      for(Eigen::Index a = 0; a < p; ++a)
+      const Eigen::Index global = Eigen::Index(w.patch[a]);
+      Sparse_matrix::InnerIterator l(stiffness_, global), b(mass_, global);
+      // merge the two sorted columns
+      while(l || b)
       {
-        for(Sparse_matrix::InnerIterator it(global, Eigen::Index(w.patch[std::size_t(a)])); it; ++it)
+        Eigen::Index r;
+        double lv = 0, bv = 0;
+        if(l && (!b || l.row() <= b.row()))
         {
-          const std::size_t k = std::size_t(it.row());
-          if(w.stamp[k] == w.generation && w.local[k] != not_in_patch)
-            w.entries.emplace_back(int(w.local[k]), int(a), it.value());
+          r = l.row();
+          lv = l.value();
+          if(b && b.row() == r)
+          {
+            bv = b.value();
+            ++b;
+          }
+          ++l;
         }
-        w.lumped_mass[a] = lumped_mass_[w.patch[std::size_t(a)]];
+        else
+        {
+          r = b.row();
+          bv = b.value();
+          ++b;
+        }
+        if(!in_patch(w, std::size_t(r)))
+          continue;
+        if(lumped)
+          bv = std::size_t(r) == std::size_t(global) ? lumped_mass_[std::size_t(global)] : 0.;
+        w.row.push_back(int(w.local[std::size_t(r)]));
+        w.stiffness_value.push_back(lv);
+        w.mass_value.push_back(bv);
+        w.patch_heat[a] += bv;  // B_P symmetric: column sums are row sums
       }
-      Sparse_matrix& local = pass == 0 ? w.stiffness : w.mass;
-      local.resize(p, p);
-      local.setFromTriplets(w.entries.begin(), w.entries.end());
+      w.column_begin.push_back(int(w.row.size()));
     }
   }
 
-  // x <- B_P^-1 x (or M^-1 x for the lumped kernel).
-  void solve_mass(Workspace& w, Eigen::VectorXd& x) const
+  // A fill-reducing ordering (AMD) of the patch pattern, and the symbolic LDL^T:
+  // elimination tree and column counts of the factor.
+  void analyse(Workspace& w) const
   {
-    if(mass_kind_ == Local_kernel_mass::lumped)
-      x.array() /= w.lumped_mass.array();
-    else
-      x = w.cholesky->solve(x);
+    const int p = int(w.patch.size());
+    // (AMD reads the pattern only, and overwrites it)
+    Eigen::SparseMatrix<double, Eigen::ColMajor, int>& pattern = w.ordering_pattern;
+    pattern.resize(p, p);
+    pattern.resizeNonZeros(int(w.row.size()));
+    std::copy(w.column_begin.begin(), w.column_begin.end(), pattern.outerIndexPtr());
+    std::copy(w.row.begin(), w.row.end(), pattern.innerIndexPtr());
+    std::fill(pattern.valuePtr(), pattern.valuePtr() + w.row.size(), 1.);
+    Eigen::PermutationMatrix<Eigen::Dynamic, Eigen::Dynamic, int> ordering;
+    Eigen::internal::minimum_degree_ordering(pattern, ordering);
+    w.permutation.assign(ordering.indices().data(), ordering.indices().data() + p);
+    w.inverse_permutation.resize(std::size_t(p));
+    for(int k = 0; k < p; ++k)
+      w.inverse_permutation[std::size_t(w.permutation[std::size_t(k)])] = k;
+
+    w.parent.assign(std::size_t(p), -1);
+    w.flag.assign(std::size_t(p), -1);
+    w.factor_count.assign(std::size_t(p), 0);
+    for(int k = 0; k < p; ++k)
+    {
+      w.flag[std::size_t(k)] = k;
+      const int a = w.permutation[std::size_t(k)];
+      for(int q = w.column_begin[std::size_t(a)]; q < w.column_begin[std::size_t(a) + 1]; ++q)
+      {
+        int i = w.inverse_permutation[std::size_t(w.row[std::size_t(q)])];
+        if(i >= k)
+          continue;
+        for(; w.flag[std::size_t(i)] != k; i = w.parent[std::size_t(i)])
+        {
+          if(w.parent[std::size_t(i)] == -1)
+            w.parent[std::size_t(i)] = k;
+          ++w.factor_count[std::size_t(i)];
+          w.flag[std::size_t(i)] = k;
+        }
+      }
+    }
+    w.factor_begin.assign(std::size_t(p) + 1, 0);
+    for(int k = 0; k < p; ++k)
+      w.factor_begin[std::size_t(k) + 1] = w.factor_begin[std::size_t(k)] + w.factor_count[std::size_t(k)];
   }
 
-  // Krylov dimension at which convergence is first checked, then every check_step.
-  std::size_t first_check() const { return std::size_t(12 + std::ceil(6. * std::sqrt(time_))); }
-  static constexpr std::size_t check_step = 4;
+  static constexpr std::size_t number_of_poles = 3;  // exponential_poles().size()
 
-  void solve_on_patch(Workspace& w) const
+  // Numeric LDL^T of P (t L_P + z_k B_P) P^T for the poles z_k together (they share the
+  // symbolic analysis: one traversal), complex symmetric (no conjugation). Entry q of
+  // the factor of pole k is factor_real / factor_imag[q * number_of_poles + k].
+  void factorise(Workspace& w) const
   {
+    constexpr std::size_t K = number_of_poles;
+    const int p = int(w.patch.size());
+    const std::size_t nnz = std::size_t(w.factor_begin[std::size_t(p)]);
+    w.factor_row.resize(nnz);
+    w.factor_real.resize(nnz * K);
+    w.factor_imag.resize(nnz * K);
+    w.diagonal_real.resize(std::size_t(p) * K);
+    w.diagonal_imag.resize(std::size_t(p) * K);
+    w.y_real.assign(std::size_t(p) * K, 0.);
+    w.y_imag.assign(std::size_t(p) * K, 0.);
+    w.pattern.resize(std::size_t(p));
+    std::fill(w.factor_count.begin(), w.factor_count.end(), 0);
+    std::fill(w.flag.begin(), w.flag.end(), -1);  // no stale marks of the symbolic analysis
+    const double t = time_;
+    const std::array<Exponential_pole, K>& poles = exponential_poles();
+    double* yr = w.y_real.data();
+    double* yi = w.y_imag.data();
+    for(int k = 0; k < p; ++k)
+    {
+      // scatter column k of the permuted upper triangle into y, and find the pattern
+      // of row k of the factor (the reach in the elimination tree)
+      int top = p;
+      w.flag[std::size_t(k)] = k;
+      const int a = w.permutation[std::size_t(k)];
+      for(int q = w.column_begin[std::size_t(a)]; q < w.column_begin[std::size_t(a) + 1]; ++q)
+      {
+        int i = w.inverse_permutation[std::size_t(w.row[std::size_t(q)])];
+        if(i > k)
+          continue;
+        const double l = t * w.stiffness_value[std::size_t(q)], b = w.mass_value[std::size_t(q)];
+        for(std::size_t m = 0; m < K; ++m)
+        {
+          yr[std::size_t(i) * K + m] += l + poles[m].pole_real * b;
+          yi[std::size_t(i) * K + m] += poles[m].pole_imag * b;
+        }
+        int length = 0;
+        for(; w.flag[std::size_t(i)] != k; i = w.parent[std::size_t(i)])
+        {
+          w.pattern[std::size_t(length++)] = i;
+          w.flag[std::size_t(i)] = k;
+        }
+        while(length > 0)
+          w.pattern[std::size_t(--top)] = w.pattern[std::size_t(--length)];
+      }
+      // (copies, then clears: one loop doing both is miscompiled by g++ 12 at -O2,
+      // whose loop distribution into memcpy / memset loses the imaginary parts)
+      std::array<double, K> dr, di;
+      std::copy(yr + std::size_t(k) * K, yr + std::size_t(k + 1) * K, dr.begin());
+      std::copy(yi + std::size_t(k) * K, yi + std::size_t(k + 1) * K, di.begin());
+      std::fill(yr + std::size_t(k) * K, yr + std::size_t(k + 1) * K, 0.);
+      std::fill(yi + std::size_t(k) * K, yi + std::size_t(k + 1) * K, 0.);
+      for(; top < p; ++top)
+      {
+        const std::size_t i = std::size_t(w.pattern[std::size_t(top)]);
+        std::array<double, K> vr, vi;
+        std::copy(yr + i * K, yr + (i + 1) * K, vr.begin());
+        std::copy(yi + i * K, yi + (i + 1) * K, vi.begin());
+        std::fill(yr + i * K, yr + (i + 1) * K, 0.);
+        std::fill(yi + i * K, yi + (i + 1) * K, 0.);
+        const std::size_t q0 = std::size_t(w.factor_begin[i]), q1 = q0 + std::size_t(w.factor_count[i]);
+        for(std::size_t q = q0; q < q1; ++q)
+        {
+          const std::size_t r = std::size_t(w.factor_row[q]);
+          const double* fr = w.factor_real.data() + q * K;
+          const double* fi = w.factor_imag.data() + q * K;
+          for(std::size_t m = 0; m < K; ++m)
+          {
+            yr[r * K + m] -= fr[m] * vr[m] - fi[m] * vi[m];
+            yi[r * K + m] -= fr[m] * vi[m] + fi[m] * vr[m];
+          }
+        }
+        w.factor_row[q1] = k;
+        for(std::size_t m = 0; m < K; ++m)
+        {
+          // l_ki = y_i / d_i
+          const double er = w.diagonal_real[i * K + m], ei = w.diagonal_imag[i * K + m];
+          const double scale = 1. / (er * er + ei * ei);
+          const double lr = (vr[m] * er + vi[m] * ei) * scale, li = (vi[m] * er - vr[m] * ei) * scale;
+          dr[m] -= lr * vr[m] - li * vi[m];
+          di[m] -= lr * vi[m] + li * vr[m];
+          w.factor_real[q1 * K + m] = lr;
+          w.factor_imag[q1 * K + m] = li;
+        }
+        ++w.factor_count[i];
+      }
+      for(std::size_t m = 0; m < K; ++m)
+      {
+        if(!(dr[m] * dr[m] + di[m] * di[m] > 0) || !std::isfinite(dr[m]) || !std::isfinite(di[m]))
+          throw std::runtime_error("CGAL::Heat_diffusion: the factorisation of a local heat kernel matrix failed");
+        w.diagonal_real[std::size_t(k) * K + m] = dr[m];
+        w.diagonal_imag[std::size_t(k) * K + m] = di[m];
+      }
+    }
+  }
+
+  // X <- (L D L^T)^-1 X with the factor of pole m, for the c columns of the block
+  // (row-major, split complex).
+  void block_solve(Workspace& w, std::size_t m, std::size_t c) const
+  {
+    constexpr std::size_t K = number_of_poles;
+    const std::size_t p = w.patch.size();
+    double* xr = w.block_real.data();
+    double* xi = w.block_imag.data();
+    for(std::size_t j = 0; j < p; ++j)
+    {
+      if(!w.row_is_nonzero[j])
+        continue;
+      const double* ar = xr + j * c;
+      const double* ai = xi + j * c;
+      const std::size_t q1 = std::size_t(w.factor_begin[j + 1]);
+      for(std::size_t q = std::size_t(w.factor_begin[j]); q < q1; ++q)
+      {
+        const std::size_t i = std::size_t(w.factor_row[q]);
+        const double lr = w.factor_real[q * K + m], li = w.factor_imag[q * K + m];
+        double* br = xr + i * c;
+        double* bi = xi + i * c;
+        for(std::size_t s = 0; s < c; ++s)
+        {
+          br[s] -= lr * ar[s] - li * ai[s];
+          bi[s] -= lr * ai[s] + li * ar[s];
+        }
+        w.row_is_nonzero[i] = 1;
+      }
+    }
+    for(std::size_t j = 0; j < p; ++j)
+    {
+      const double er = w.diagonal_real[j * K + m], ei = w.diagonal_imag[j * K + m];
+      const double scale = 1. / (er * er + ei * ei);
+      const double gr = er * scale, gi = -ei * scale;  // 1 / d_j
+      double* ar = xr + j * c;
+      double* ai = xi + j * c;
+      for(std::size_t s = 0; s < c; ++s)
+      {
+        const double vr = ar[s], vi = ai[s];
+        ar[s] = gr * vr - gi * vi;
+        ai[s] = gr * vi + gi * vr;
+      }
+    }
+    for(std::size_t j = p; j-- > 0;)
+    {
+      double* ar = xr + j * c;
+      double* ai = xi + j * c;
+      const std::size_t q1 = std::size_t(w.factor_begin[j + 1]);
+      for(std::size_t q = std::size_t(w.factor_begin[j]); q < q1; ++q)
+      {
+        const std::size_t i = std::size_t(w.factor_row[q]);
+        const double lr = w.factor_real[q * K + m], li = w.factor_imag[q * K + m];
+        const double* br = xr + i * c;
+        const double* bi = xi + i * c;
+        for(std::size_t s = 0; s < c; ++s)
+        {
+          ar[s] -= lr * br[s] - li * bi[s];
+          ai[s] -= lr * bi[s] + li * br[s];
+        }
+      }
+    }
+  }
+
+  // The columns of `count` sources on the union of their balls of `radius`:
+  // w.columns (p x count), w.deficits, w.whole_component.
+  void compute_cluster(const std::size_t* sources, std::size_t count, double radius, Workspace& w) const
+  {
+    w.whole_component = grow_patch(sources, count, radius, w);
     extract_patch_matrices(w);
-    const Eigen::Index p = Eigen::Index(w.patch.size());
-    if(mass_kind_ == Local_kernel_mass::consistent)
+    analyse(w);
+    const std::size_t p = w.patch.size(), c = count;
+    w.columns.setZero(Eigen::Index(p), Eigen::Index(c));
+    w.block_real.resize(p * c);
+    w.block_imag.resize(p * c);
+    w.row_is_nonzero.resize(p);
+    factorise(w);
+    for(std::size_t m = 0; m < number_of_poles; ++m)
     {
-      w.cholesky->compute(w.mass);
-      if(w.cholesky->info() != Eigen::Success)
-        throw std::runtime_error("CGAL::Heat_diffusion: the factorisation of a local mass matrix failed");
+      const Exponential_pole& pole = exponential_poles()[m];
+      // right-hand sides -a_k e_j, then h += Re((t L + z B)^-1 (-a_k e_j))
+      std::fill(w.block_real.begin(), w.block_real.end(), 0.);
+      std::fill(w.block_imag.begin(), w.block_imag.end(), 0.);
+      std::fill(w.row_is_nonzero.begin(), w.row_is_nonzero.end(), 0);
+      for(std::size_t s = 0; s < c; ++s)
+      {
+        const std::size_t r = std::size_t(w.inverse_permutation[w.local[sources[s]]]);
+        w.block_real[r * c + s] = -pole.residue_real;
+        w.block_imag[r * c + s] = -pole.residue_imag;
+        w.row_is_nonzero[r] = 1;
+      }
+      block_solve(w, m, c);
+      for(std::size_t a = 0; a < p; ++a)
+      {
+        const double* x = w.block_real.data() + std::size_t(w.inverse_permutation[a]) * c;
+        for(std::size_t s = 0; s < c; ++s)
+          w.columns(Eigen::Index(a), Eigen::Index(s)) += x[s];
+      }
     }
-    Eigen::Index capacity = (std::min)(p, Eigen::Index(first_check() + 2 * check_step));
-    w.basis.resize(p, capacity);
-    w.mass_times_basis.resize(p, capacity);
-    w.alpha.clear();
-    w.beta.clear();
-
-    // v_1 = B_P^-1 e_j / beta_0 with beta_0 = |B_P^-1 e_j|_B = sqrt(e_j^T B_P^-1 e_j).
-    w.work = Eigen::VectorXd::Unit(p, 0);
-    solve_mass(w, w.work);
-    const double initial_norm = std::sqrt(w.work[0]);
-    w.basis.col(0) = w.work / initial_norm;
-    w.mass_times_basis.col(0) = Eigen::VectorXd::Unit(p, 0) / initial_norm;
-
-    Eigen::Index k = 0;  // vectors in the basis
-    Eigen::Index next_check = (std::min)(Eigen::Index(first_check()), p);
-    Eigen::VectorXd stiffness_times_v(p);
-    for(;;)
-    {
-      // w = B^-1 L v_k - alpha v_k - beta v_k-1, and B w alongside (no extra product).
-      stiffness_times_v.noalias() = w.stiffness * w.basis.col(k);
-      const double alpha = w.basis.col(k).dot(stiffness_times_v);
-      w.alpha.push_back(alpha);
-      w.work = stiffness_times_v;
-      solve_mass(w, w.work);
-      w.work -= alpha * w.basis.col(k);
-      Eigen::VectorXd mass_times_work = stiffness_times_v - alpha * w.mass_times_basis.col(k);
-      if(k > 0)
-      {
-        w.work -= w.beta.back() * w.basis.col(k - 1);
-        mass_times_work -= w.beta.back() * w.mass_times_basis.col(k - 1);
-      }
-      ++k;
-      const double beta = std::sqrt((std::max)(0., w.work.dot(mass_times_work)));
-      const bool exhausted = k == p || !(beta > 1e-12 * std::abs(alpha));
-      if(k == next_check || exhausted)
-      {
-        const double newest = solve_projected(w, k, initial_norm);
-        if(newest <= tolerance_ || exhausted)
-          break;
-        next_check = (std::min)(k + Eigen::Index(check_step), p);
-      }
-      if(k == capacity)
-      {
-        capacity = (std::min)(p, 2 * capacity);
-        w.basis.conservativeResize(p, capacity);
-        w.mass_times_basis.conservativeResize(p, capacity);
-      }
-      w.beta.push_back(beta);
-      w.basis.col(k) = w.work / beta;
-      w.mass_times_basis.col(k) = mass_times_work / beta;
-    }
-    w.krylov_dimension = std::size_t(k);
-
-    // h_P = V c, and the heat it carries, 1^T B_P h_P = (B_P V c) summed.
-    w.values.resize(std::size_t(p));
-    Eigen::Map<Eigen::VectorXd> h(w.values.data(), p);
-    h.noalias() = w.basis.leftCols(k) * w.coefficients;
-    const double heat = (w.mass_times_basis.leftCols(k) * w.coefficients).sum();
-    w.heat_deficit = std::abs(1. - heat);
+    w.deficits.resize(c);
+    const Eigen::Map<const Eigen::VectorXd> heat(w.patch_heat.data(), Eigen::Index(p));
+    for(std::size_t s = 0; s < c; ++s)
+      w.deficits[s] = std::abs(1. - heat.dot(w.columns.col(Eigen::Index(s))));
+    w.cluster_size = c;
   }
 
-  // The coefficients c = beta_0 exp(-tT) e_1 in the basis of the first k vectors, and
-  // the relative size of the newest two (the convergence estimate).
-  double solve_projected(Workspace& w, Eigen::Index k, double initial_norm) const
-  {
-    Eigen::VectorXd diagonal(k), subdiagonal((std::max)(k - 1, Eigen::Index(1)));
-    for(Eigen::Index a = 0; a < k; ++a)
-      diagonal[a] = w.alpha[std::size_t(a)];
-    for(Eigen::Index a = 0; a + 1 < k; ++a)
-      subdiagonal[a] = w.beta[std::size_t(a)];
-    Eigen::SelfAdjointEigenSolver<Eigen::MatrixXd> eigen;
-    eigen.computeFromTridiagonal(diagonal, subdiagonal.head(k - 1), Eigen::ComputeEigenvectors);
-    const Eigen::VectorXd decay = (-time_ * eigen.eigenvalues().array()).exp();
-    w.coefficients =
-        eigen.eigenvectors() * (decay.asDiagonal() * eigen.eigenvectors().row(0).transpose()) * initial_norm;
-    const double newest = k >= 2 ? std::hypot(w.coefficients[k - 1], w.coefficients[k - 2])
-                                 : std::abs(w.coefficients[k - 1]);
-    return newest / w.coefficients.norm();
-  }
+  // r(x) ~ exp(-x) of exponential_poles() must have as many poles as this class uses
+  static_assert(number_of_poles == std::tuple_size<std::decay_t<decltype(exponential_poles())> >::value,
+                "one factor per pole of exponential_poles()");
 
   const Indexed_mesh& mesh_;
   const Sparse_matrix& stiffness_;
@@ -385,6 +705,11 @@ private:
   Local_kernel_mass mass_kind_;
   std::vector<double> lumped_mass_;
   double initial_radius_ = 0;
+  std::vector<std::size_t> neighbour_begin_;
+  std::vector<std::uint32_t> neighbour_;
+  std::vector<double> edge_length_;
+  std::vector<std::size_t> cluster_order_, cluster_begin_;
+  std::vector<std::uint32_t> cluster_of_, position_in_cluster_;
 };
 
 } // namespace internal
