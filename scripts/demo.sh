@@ -23,7 +23,6 @@ if /usr/bin/python3 -c 'import matplotlib, numpy' 2>/dev/null; then py=/usr/bin/
 render() { "$py" scripts/render.py "$@"; }
 
 note() { echo "note: $*" | tee -a "$out/notes.txt" >&2; }
-has() { "$tool" --help 2>&1 | grep -Eq "^[[:space:]]+$1([[:space:]]|\$)"; }
 # Runs the tool with --json, keeps the summary in out/NAME.json; a failure is a note.
 run() {
   local name=$1; shift
@@ -71,13 +70,9 @@ if [ ${#heat_inputs[@]} -gt 0 ]; then
 fi
 
 # 4. Features at the scales k = 0, 10, 40.
-if has features; then
-  run fandisk_features features "$mesh" --sigma 0.1 -k 0,10,40 -o "$out/fandisk_features" --quiet &&
-    picture fandisk_features.png "$out/fandisk_features_k"{0,10,40}.ply --points-property feature \
-      --titles "features, k = 0|k = 10|k = 40"
-else
-  note "the tool has no 'features' subcommand yet: features skipped"
-fi
+run fandisk_features features "$mesh" --sigma 0.1 -k 0,10,40 -o "$out/fandisk_features" --quiet &&
+  picture fandisk_features.png "$out/fandisk_features_k"{0,10,40}.ply --points-property feature \
+    --titles "features, k = 0|k = 10|k = 40"
 
 # 5. A noisy copy (Gaussian noise along the normals, 0.2 mean edge length) and its
 #    denoised result; the error is measured against the original fandisk.
@@ -86,37 +81,25 @@ render noise "$mesh" -o "$out/fandisk_noisy.off" --amplitude 0.2 --seed 1 > "$ou
 if [ -f "$out/fandisk_noisy.off" ]; then
   run fandisk_noisy_ns ncc "$out/fandisk_noisy.off" -o "$out/fandisk_noisy_ns.ply" --quiet &&
     picture fandisk_noisy.png "$out/fandisk_noisy_ns.ply" --titles "noisy copy, coloured by its NS"
-  if has denoise; then
-    if run fandisk_denoise denoise "$out/fandisk_noisy.off" -o "$out/fandisk_denoised.off" --quiet; then
-      render error "$mesh" "$out/fandisk_denoised.off" > "$out/fandisk_denoised_error.json" ||
-        note "denoising error not measured"
-      run fandisk_denoised_ns ncc "$out/fandisk_denoised.off" -o "$out/fandisk_denoised_ns.ply" --quiet &&
-        picture fandisk_denoised.png "$out/fandisk_noisy_ns.ply" "$out/fandisk_denoised_ns.ply" \
-          --titles "noisy|denoised (coloured by the NS)"
-    fi
-  else
-    note "the tool has no 'denoise' subcommand yet: denoising skipped"
+  if run fandisk_denoise denoise "$out/fandisk_noisy.off" -o "$out/fandisk_denoised.off" --quiet; then
+    render error "$mesh" "$out/fandisk_denoised.off" > "$out/fandisk_denoised_error.json" ||
+      note "denoising error not measured"
+    run fandisk_denoised_ns ncc "$out/fandisk_denoised.off" -o "$out/fandisk_denoised_ns.ply" --quiet &&
+      picture fandisk_denoised.png "$out/fandisk_noisy_ns.ply" "$out/fandisk_denoised_ns.ply" \
+        --titles "noisy|denoised (coloured by the NS)"
   fi
 fi
 
 # 6. The decomposition of the NS into detail bands and a residual.
-if has decompose; then
-  run fandisk_decompose decompose "$mesh" --levels 3 --steps-per-level 5 -o "$out/fandisk_decomposed" --quiet &&
-    picture fandisk_decompose.png "$out/fandisk_decomposed_band"{1,2,3}.ply "$out/fandisk_decomposed_residual.ply" \
-      --titles "band 1 (finest)|band 2|band 3|residual"
-else
-  note "the tool has no 'decompose' subcommand yet: decomposition skipped"
-fi
+run fandisk_decompose decompose "$mesh" --levels 3 --steps-per-level 5 -o "$out/fandisk_decomposed" --quiet &&
+  picture fandisk_decompose.png "$out/fandisk_decomposed_band"{1,2,3}.ply "$out/fandisk_decomposed_residual.ply" \
+    --titles "band 1 (finest)|band 2|band 3|residual"
 
 # 7. An enhanced shape (band weights 1, 3, 3), shown with its NS.
-if has enhance; then
-  run fandisk_enhance enhance "$mesh" --weights 1,3,3 -o "$out/fandisk_enhanced.off" --quiet &&
-    run fandisk_enhanced_ns ncc "$out/fandisk_enhanced.off" -o "$out/fandisk_enhanced_ns.ply" --quiet &&
-    picture fandisk_enhanced.png "$out/fandisk_ns.ply" "$out/fandisk_enhanced_ns.ply" \
-      --titles "input|enhanced, weights 1, 3, 3 (coloured by the NS)"
-else
-  note "the tool has no 'enhance' subcommand yet: enhancement skipped"
-fi
+run fandisk_enhance enhance "$mesh" --weights 1,3,3 -o "$out/fandisk_enhanced.off" --quiet &&
+  run fandisk_enhanced_ns ncc "$out/fandisk_enhanced.off" -o "$out/fandisk_enhanced_ns.ply" --quiet &&
+  picture fandisk_enhanced.png "$out/fandisk_ns.ply" "$out/fandisk_enhanced_ns.ply" \
+    --titles "input|enhanced, weights 1, 3, 3 (coloured by the NS)"
 
 # 8. The one-page summary.
 "$py" scripts/summary.py "$out" > "$out/summary.md.tmp" && mv "$out/summary.md.tmp" "$out/summary.md" ||

@@ -4,12 +4,14 @@
 # conservation plot, and one figure per application. Run it after scripts/setup.sh;
 # the figures are committed, so only a change of the maths needs a new run.
 #   bash scripts/manual_figures.sh [OUTPUT_DIR]   (default doc/Heat_diffusion/fig)
+# HEAT_DIFFUSION_BUILD_DIR names another build folder (default build).
 set -euo pipefail
 cd "$(dirname "$0")/.."
-tool=build/bin/heat_diffusion
-mesh=build/data/meshes/fandisk.off
+build=${HEAT_DIFFUSION_BUILD_DIR:-build}
+tool=$build/bin/heat_diffusion
+mesh=$build/data/meshes/fandisk.off
 fig=${1:-doc/Heat_diffusion/fig}
-[ -x "$tool" ] || { echo "build/bin/heat_diffusion is missing: run scripts/setup.sh first" >&2; exit 1; }
+[ -x "$tool" ] || { echo "$tool is missing: run scripts/setup.sh first" >&2; exit 1; }
 mkdir -p "$fig"
 work=$(mktemp -d)
 trap 'rm -rf "$work"' EXIT

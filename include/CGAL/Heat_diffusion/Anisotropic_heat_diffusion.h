@@ -18,7 +18,9 @@
 
 #include <algorithm>
 #include <cmath>
+#include <limits>
 #include <memory>
+#include <mutex>
 #include <sstream>
 #include <stdexcept>
 #include <vector>
@@ -120,8 +122,8 @@ public:
   ///
   /// Complexity: that of `Edge_weighted_heat_kernel` plus the construction from a kernel
   /// below (spectral); linear in the number of vertices for a fixed t (local: per
-  /// vertex, a sparse factorisation on a patch of O(t) vertices and O(sqrt(t)) Lanczos
-  /// steps; parallel with TBB).
+  /// cluster of 32 sources, three complex sparse factorisations on a patch whose size
+  /// grows like t, and three block solves; parallel with TBB).
   template <typename NamedParameters = parameters::Default_named_parameters>
   explicit Anisotropic_heat_diffusion(const TriangleMesh& tm, const NamedParameters& np = parameters::default_values())
     : method_(parameters::choose_parameter(parameters::get_parameter(np, internal_np::kernel_method),
@@ -193,7 +195,13 @@ public:
   /// The number of vertices.
   std::size_t number_of_vertices() const { return ncc_->indexed_mesh().number_of_vertices(); }
   /// \f$ A_t \f$, column-stochastic; rows and columns follow `Heat_kernel::vertex_index()`.
-  const Sparse_matrix& operator_matrix() const { return operator_; }
+  /// The diffusion keeps \f$ A_t \f$ in compressed rows only; this compressed-column copy
+  /// is made on the first call (thread-safe) and kept.
+  const Sparse_matrix& operator_matrix() const
+  {
+    std::call_once(column_major_->once, [this] { column_major_->matrix = row_major_; });
+    return column_major_->matrix;
+  }
   /// Sizes of the heat regions.
   const Heat_region_statistics& region_statistics() const { return statistics_; }
 
@@ -408,83 +416,136 @@ private:
       std::vector<std::size_t> queue;
       typename Columns::Workspace kernel_workspace;
     };
-    std::vector<std::vector<std::pair<std::size_t, double> > > columns(n);
-    internal::parallel_for_with_scratch(
-        n, [&] { return Scratch{std::vector<std::size_t>(n, 0), 0, {}, kernel.make_workspace()}; },
-        [&](std::size_t position, Scratch& s) {
-          const std::size_t j = order[position];
-          kernel.prepare(j, s.kernel_workspace);
-          auto h = [&](std::size_t i) { return kernel(j, i, s.kernel_workspace); };
-          ++s.generation;
-          const double peak = h(j);
-          const double tau = relative ? threshold() * peak : threshold();
-          auto& column = columns[j];
-          column.clear();
-          column.emplace_back(j, peak);
-          s.mark[j] = s.generation;
-          s.queue.assign(1, j);
-          for(std::size_t q = 0; q < s.queue.size() && column.size() < maximum_region_size; ++q)
-          {
-            const std::size_t i = s.queue[q];
-            for(std::size_t k = mesh.fan_begin[i]; k < mesh.fan_begin[i + 1]; ++k)
+    // Memory (1.66M vertices, ~58 entries a column: 96M entries). The columns are
+    // computed in blocks of sources, in parallel within a block, and appended to
+    // large fixed-size chunks; the per-column vectors are reused from block to block.
+    // A_t is then written once, in compressed rows (what the diffusion steps read),
+    // and the chunks are freed. One small vector per column kept to the end would
+    // leave their memory in the allocator's arenas (1.5 GB at that size), and a
+    // compressed-column copy next to the rows would double the final size.
+    typedef typename Row_major::StorageIndex Storage_index;
+    struct Placement
+    {
+      std::size_t chunk = 0, offset = 0, size = 0;
+    };
+    constexpr std::size_t block_size = 65536, chunk_capacity = std::size_t(1) << 22;
+    std::vector<Placement> placement(n);
+    std::vector<std::vector<Storage_index> > chunk_rows;
+    std::vector<std::vector<double> > chunk_values;
+    std::vector<std::vector<std::pair<std::size_t, double> > > columns((std::min)(block_size, n));
+    for(std::size_t first = 0; first < n; first += block_size)
+    {
+      const std::size_t count = (std::min)(block_size, n - first);
+      internal::parallel_for_with_scratch(
+          count, [&] { return Scratch{std::vector<std::size_t>(n, 0), 0, {}, kernel.make_workspace()}; },
+          [&](std::size_t position, Scratch& s) {
+            const std::size_t j = order[first + position];
+            kernel.prepare(j, s.kernel_workspace);
+            auto h = [&](std::size_t i) { return kernel(j, i, s.kernel_workspace); };
+            ++s.generation;
+            const double peak = h(j);
+            const double tau = relative ? threshold() * peak : threshold();
+            auto& column = columns[position];
+            column.clear();
+            column.emplace_back(j, peak);
+            s.mark[j] = s.generation;
+            s.queue.assign(1, j);
+            for(std::size_t q = 0; q < s.queue.size() && column.size() < maximum_region_size; ++q)
             {
-              const std::size_t u = mesh.fan[k];
-              if(s.mark[u] == s.generation)
-                continue;
-              s.mark[u] = s.generation;
-              const double value = h(u);
-              if(value > tau && column.size() < maximum_region_size)
+              const std::size_t i = s.queue[q];
+              for(std::size_t k = mesh.fan_begin[i]; k < mesh.fan_begin[i + 1]; ++k)
               {
-                column.emplace_back(u, value);
-                s.queue.push_back(u);
+                const std::size_t u = mesh.fan[k];
+                if(s.mark[u] == s.generation)
+                  continue;
+                s.mark[u] = s.generation;
+                const double value = h(u);
+                if(value > tau && column.size() < maximum_region_size)
+                {
+                  column.emplace_back(u, value);
+                  s.queue.push_back(u);
+                }
               }
             }
-          }
-          // A region whose source value is not positive (possible only for a badly
-          // truncated kernel), or whose total is not finite (a kernel overflowing at an
-          // extreme t), keeps its heat: a column of the identity, never NaN in A_t.
-          double sum = 0;
-          for(const auto& entry : column)
-            sum += entry.second;
-          if(!(column.front().second > 0) || !(sum > 0) || !std::isfinite(sum))
-            column.assign(1, {j, 1.});
-          else
-            for(auto& entry : column)
-              entry.second /= sum;
-          std::sort(column.begin(), column.end());
-          column.shrink_to_fit();
-        });
+            // A region whose source value is not positive (possible only for a badly
+            // truncated kernel), or whose total is not finite (a kernel overflowing at an
+            // extreme t), keeps its heat: a column of the identity, never NaN in A_t.
+            double sum = 0;
+            for(const auto& entry : column)
+              sum += entry.second;
+            if(!(column.front().second > 0) || !(sum > 0) || !std::isfinite(sum))
+              column.assign(1, {j, 1.});
+            else
+              for(auto& entry : column)
+                entry.second /= sum;
+          });
+      for(std::size_t position = 0; position < count; ++position)
+      {
+        auto& column = columns[position];
+        if(chunk_rows.empty() || chunk_rows.back().size() + column.size() > chunk_rows.back().capacity())
+        {
+          chunk_rows.emplace_back();
+          chunk_rows.back().reserve((std::max)(chunk_capacity, column.size()));
+          chunk_values.emplace_back();
+          chunk_values.back().reserve((std::max)(chunk_capacity, column.size()));
+        }
+        placement[order[first + position]] = {chunk_rows.size() - 1, chunk_rows.back().size(), column.size()};
+        for(const auto& entry : column)
+        {
+          chunk_rows.back().push_back(Storage_index(entry.first));
+          chunk_values.back().push_back(entry.second);
+        }
+      }
+    }
+    std::vector<std::vector<std::pair<std::size_t, double> > >().swap(columns);
 
     statistics_ = Heat_region_statistics();
     statistics_.min_size = n;
     std::size_t total = 0;
-    for(const auto& column : columns)
-      total += column.size();
-    // A_t written in compressed columns directly (the columns are sorted), each column
-    // freed once copied: no triplets, which would double the peak memory on large meshes.
-    operator_.resize(Eigen::Index(n), Eigen::Index(n));
-    operator_.resizeNonZeros(Eigen::Index(total));
-    std::size_t position = 0;
+    for(const Placement& p : placement)
+    {
+      total += p.size;
+      statistics_.min_size = (std::min)(statistics_.min_size, p.size);
+      statistics_.max_size = (std::max)(statistics_.max_size, p.size);
+      statistics_.collapsed_regions += p.size == 1 ? 1 : 0;
+      statistics_.capped_regions += p.size >= maximum_region_size ? 1 : 0;
+    }
+    statistics_.mean_size = double(total) / double(n);
+    if(total > std::size_t((std::numeric_limits<Storage_index>::max)()))
+      throw std::length_error("CGAL::Heat_diffusion::Anisotropic_heat_diffusion: A_t has more entries than its "
+                              "index type holds; use a smaller time t");
+
+    // Compressed rows: count the entries of each row, then scatter the columns in
+    // increasing j, which leaves every row sorted.
+    row_major_ = Row_major(Eigen::Index(n), Eigen::Index(n));
+    row_major_.resizeNonZeros(Eigen::Index(total));
+    Storage_index* outer = row_major_.outerIndexPtr();
+    std::fill(outer, outer + n + 1, Storage_index(0));
+    for(std::size_t c = 0; c < chunk_rows.size(); ++c)
+      for(Storage_index i : chunk_rows[c])
+        ++outer[i + 1];
+    for(std::size_t i = 0; i < n; ++i)
+      outer[i + 1] += outer[i];
+    std::vector<Storage_index> next(outer, outer + n);
     for(std::size_t j = 0; j < n; ++j)
     {
-      const std::size_t size = columns[j].size();
-      statistics_.min_size = (std::min)(statistics_.min_size, size);
-      statistics_.max_size = (std::max)(statistics_.max_size, size);
-      statistics_.collapsed_regions += size == 1 ? 1 : 0;
-      statistics_.capped_regions += size >= maximum_region_size ? 1 : 0;
-      operator_.outerIndexPtr()[j] = typename Sparse_matrix::StorageIndex(position);
-      for(const auto& entry : columns[j])
+      const Placement& p = placement[j];
+      for(std::size_t k = p.offset; k < p.offset + p.size; ++k)
       {
-        operator_.innerIndexPtr()[position] = typename Sparse_matrix::StorageIndex(entry.first);
-        operator_.valuePtr()[position] = entry.second;
-        ++position;
+        const Storage_index position = next[std::size_t(chunk_rows[p.chunk][k])]++;
+        row_major_.innerIndexPtr()[position] = Storage_index(j);
+        row_major_.valuePtr()[position] = chunk_values[p.chunk][k];
       }
-      std::vector<std::pair<std::size_t, double> >().swap(columns[j]);
     }
-    operator_.outerIndexPtr()[n] = typename Sparse_matrix::StorageIndex(position);
-    statistics_.mean_size = double(total) / double(n);
-    row_major_ = operator_;
+    column_major_ = std::make_shared<Column_major_copy>();
   }
+
+  // operator_matrix(), made from the rows on the first call (thread-safe), shared by copies.
+  struct Column_major_copy
+  {
+    std::once_flag once;
+    Sparse_matrix matrix;
+  };
 
   typedef Eigen::SparseMatrix<double, Eigen::RowMajor> Row_major;
 
@@ -494,8 +555,8 @@ private:
   const NCC* ncc_ = nullptr;
   Heat_kernel_method method_ = Heat_kernel_method::spectral;
   double time_ = 1.;
-  Sparse_matrix operator_;
   Row_major row_major_;
+  std::shared_ptr<Column_major_copy> column_major_ = std::make_shared<Column_major_copy>();
   Heat_region_statistics statistics_;
 };
 

@@ -22,11 +22,12 @@ enum class Heat_kernel_method
   /// signature and the global smoothing.
   spectral,
   /// Each column \f$ h_t(\cdot, j) \f$ computed on a patch grown around \f$ v_j \f$ by a
-  /// Lanczos approximation of the matrix exponential, with no eigenpairs and no
-  /// truncation of the spectrum: relative error below \f$ 10^{-3} \f$ at any t (measured
-  /// \f$ 2 \cdot 10^{-4} \f$ and below for t in [0.5, 4]), at a cost per vertex that grows
-  /// like \f$ t^{3/2} \f$. The right choice for small t, where the truncated kernel is
-  /// too flat (see the user manual).
+  /// rational approximation of the matrix exponential (three complex poles, one patch
+  /// and one factorisation per cluster of 32 sources), with no eigenpairs and no
+  /// truncation of the spectrum: relative error below \f$ 10^{-4} \f$ for t in [0.5, 4]
+  /// on CGAL's fandisk and armadillo, where building \f$ A_t \f$ this way is 1.1 to 9.5
+  /// times faster than the spectral path, eigen solve included (see the user manual). The right choice
+  /// for small t, where the truncated kernel is too flat.
   local
 };
 
