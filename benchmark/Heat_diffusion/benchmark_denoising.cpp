@@ -239,7 +239,7 @@ Score best_heat_diffusion(const Mesh& clean, const Mesh& noisy, double edge)
 }
 
 // The paper's pipeline (Denoising_method::signature_diffusion) with its defaults, with
-// the spectral kernel (its default, the paper's) or with the local kernel.
+// the spectral kernel (the paper's) or with the local kernel (the default).
 Score heat_diffusion_signature(const Mesh& clean, const Mesh& noisy, double edge, HD::Heat_kernel_method kernel)
 {
   Mesh mesh = noisy;

@@ -29,8 +29,9 @@ int main(int argc, char* argv[])
   auto ns = mesh.add_property_map<vertex_descriptor, double>("v:ns", 0.).first;
   HD::compute_normal_signature(mesh, ns);
 
-  // Build the diffusion once (sigma = 1 as in the paper's Fig. 6), then detect the
-  // features of F^k = A_t^k NS for k = 0, 10 and 40 in one pass.
+  // Build the diffusion once (sigma = 1 as in the paper's Fig. 6; the default kernel,
+  // which is the local one when no eigenpairs are asked for), then detect the features
+  // of F^k = A_t^k NS for k = 0, 10 and 40 in one pass.
   const HD::Anisotropic_heat_diffusion<Mesh> diffusion(mesh, HD::parameters::sigma(1.));
   const std::vector<std::size_t> scales = {0, 10, 40};
   for(const auto& features :

@@ -181,7 +181,7 @@ for c in diffuse features hks decompose enhance denoise; do
   done
   # denoise takes them with its signature_diffusion method
   method=(); [ "$c" = denoise ] && method=(--method signature_diffusion)
-  expect 2 "--kernel must be 'spectral' or 'local', not 'magic'" -- "$tool" "$c" "$data/elephant.off" "${method[@]}" --kernel magic
+  expect 2 "--kernel must be 'automatic', 'spectral' or 'local', not 'magic'" -- "$tool" "$c" "$data/elephant.off" "${method[@]}" --kernel magic
   expect 2 "-m must be a whole number from 1 to 1000000, not '1e30'" -- "$tool" "$c" "$data/elephant.off" "${method[@]}" -m 1e30
   expect 2 "--sigma must be a number > 0 or 'inf'" -- "$tool" "$c" "$data/elephant.off" "${method[@]}" --sigma -inf
   expect 2 '--coarse' -- "$tool" "$c" "$data/elephant.off" "${method[@]}" --coarse 1e30
@@ -220,6 +220,17 @@ expect 2 '-m is the number of eigenpairs of the spectral kernel: --kernel local 
 expect 2 '--coarse is the coarse level of the eigen solve: --kernel local computes none' -- "$tool" features "$data/elephant.off" --kernel local --coarse 100
 expect 2 '--scale-invariant needs the eigenvalues' -- "$tool" decompose "$data/elephant.off" --kernel local --scale-invariant
 expect 2 '--kernel local: the heat kernel signature is a sum over the eigenpairs' -- "$tool" hks "$data/elephant.off" --kernel local
+# --kernel automatic (the default): local unless the eigenpairs are asked for
+for c in diffuse features decompose enhance; do
+  out_name=auto_$c; [ "$c" = enhance ] && out_name=auto_enhanced.off
+  expect 0 '"kernel": "local", "kernel_automatic": true' -- "$tool" "$c" "$data/elephant.off" -o "$out_name" --json --quiet
+  expect 0 '"kernel": "spectral", "kernel_automatic": true' -- "$tool" "$c" "$data/elephant.off" -m 20 -o "$out_name" --json --quiet
+  expect 0 '"kernel": "spectral", "kernel_automatic": false' -- "$tool" "$c" "$data/elephant.off" --kernel spectral -o "$out_name" --json --quiet
+done
+expect 0 '"kernel": "spectral", "kernel_automatic": true' -- "$tool" features "$data/elephant.off" --coarse 0 -o auto_c0 --json --quiet
+expect 0 '"kernel": "spectral", "kernel_automatic": true' -- "$tool" decompose "$data/elephant.off" --scale-invariant -o auto_si --json --quiet
+expect 0 '"kernel": "local", "kernel_automatic": false' -- "$tool" features "$data/elephant.off" --kernel local -o auto_l --json --quiet
+expect 0 '"kernel": "spectral", "kernel_automatic": true' -- "$tool" hks "$data/elephant.off" -o auto_hks.ply --json --quiet
 # -k is the number of diffusion steps everywhere: the scales (diffuse, features), the steps
 # of one level (decompose, enhance; also --steps-per-level), the steps per iteration (denoise)
 expect 0 '"steps_per_level": 2' -- "$tool" decompose "$data/elephant.off" -m 20 -k 2 --levels 2 -o deck --json --quiet
@@ -232,6 +243,11 @@ out=$(HEAT_DIFFUSION_PROGRESS=always "$tool" diffuse "$data/elephant.off" -m 20 
 grep -q 'eigen solve \[' <<<"$out" && grep -q 'diffusion \[#' <<<"$out" && pass || fail "no progress bar: $out"
 out=$(HEAT_DIFFUSION_PROGRESS=always "$tool" enhance "$data/elephant.off" -m 20 -o prog_e.off 2>&1 >/dev/null)
 grep -q 'eigen solve \[' <<<"$out" && pass || fail "no enhance progress bar: $out"
+# and for the heat regions of the spectral kernel, and the local kernel's columns
+out=$(HEAT_DIFFUSION_PROGRESS=always "$tool" features "$data/elephant.off" -m 20 -o prog 2>&1 >/dev/null)
+grep -q 'heat regions \[#' <<<"$out" && pass || fail "no heat regions progress bar: $out"
+out=$(HEAT_DIFFUSION_PROGRESS=always "$tool" diffuse "$data/elephant.off" -k 0,20 -o prog --no-baseline 2>&1 >/dev/null)
+grep -q 'local kernel \[#' <<<"$out" && pass || fail "no local kernel progress bar: $out"
 out=$(HEAT_DIFFUSION_PROGRESS=always "$tool" features "$data/elephant.off" -m 20 -o prog --quiet 2>&1 >/dev/null)
 [ -z "$out" ] && pass || fail "--quiet still shows a progress bar: $out"
 out=$("$tool" diffuse "$data/elephant.off" -m 20 -k 0,20 -o prog 2>&1 >/dev/null)

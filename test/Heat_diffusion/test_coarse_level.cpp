@@ -14,7 +14,12 @@
 
 #include "test_support.h"
 
+#include <algorithm>
 #include <map>
+
+#ifdef CGAL_LINKED_WITH_TBB
+#include <tbb/task_arena.h>
+#endif
 
 namespace HD = CGAL::Heat_diffusion;
 typedef CGAL::Exact_predicates_inexact_constructions_kernel K;
@@ -77,11 +82,48 @@ void test_hilbert_numbering()
   CHECK_MESSAGE(difference <= 1e-12 * largest, "operator entries differ by " << difference << " (largest " << largest << ")");
 }
 
+// The staged simplification of a mesh of more than four times the coarse size: its
+// proposals are computed in parallel, so one thread must give the same coarse level
+// bit for bit; its progress moves forward to 1, and a cancelling callback stops it.
+void test_staged_simplification()
+{
+  Mesh mesh = test_support::load<Mesh>("fandisk.off");
+  CGAL::Subdivision_method_3::Loop_subdivision(mesh, CGAL::parameters::number_of_iterations(2));
+  const HD::internal::Indexed_mesh fine =
+      HD::internal::make_indexed_mesh(mesh, mesh.points(), get(CGAL::vertex_index, mesh));
+  const std::size_t target = 5000;
+  CHECK(fine.number_of_vertices() > HD::internal::prepass_factor * target);
+  std::vector<double> fractions;
+  const HD::internal::Progress progress([&](double f) {
+    fractions.push_back(f);
+    return true;
+  });
+  const HD::internal::Coarse_level parallel = HD::internal::make_coarse_level(fine, target, progress);
+  HD::internal::Coarse_level sequential;
+#ifdef CGAL_LINKED_WITH_TBB
+  tbb::task_arena one_thread(1);
+  one_thread.execute([&] { sequential = HD::internal::make_coarse_level(fine, target); });
+#else
+  sequential = HD::internal::make_coarse_level(fine, target);
+#endif
+  CHECK(parallel.mesh.number_of_vertices() == sequential.mesh.number_of_vertices());
+  CHECK(parallel.mesh.points == sequential.mesh.points && parallel.mesh.triangles == sequential.mesh.triangles);
+  CHECK(parallel.prolongation.nonZeros() == sequential.prolongation.nonZeros() &&
+        Eigen::SparseMatrix<double>(parallel.prolongation - sequential.prolongation).norm() == 0.);
+  std::cout << "staged simplification of " << fine.number_of_vertices() << " vertices to "
+            << parallel.mesh.number_of_vertices() << ": " << fractions.size() << " progress reports" << std::endl;
+  CHECK(fractions.size() >= 10 && fractions.front() == 0. && fractions.back() == 1.);
+  CHECK(std::is_sorted(fractions.begin(), fractions.end()));
+  CHECK_THROWS(HD::internal::make_coarse_level(fine, target, HD::internal::Progress([](double f) { return f < 0.2; })),
+               std::runtime_error, "simplification of the coarse level cancelled");
+}
+
 int main()
 {
   try
   {
     test_hilbert_numbering();
+    test_staged_simplification();
     const std::vector<std::size_t> steps = {1, 10, 40};
     // The bound on the relative L2 error of the diffused NS for a 5000-vertex coarse
     // level at t = 4 ln 10 / lambda_m, where the truncated kernel is valid: about twice

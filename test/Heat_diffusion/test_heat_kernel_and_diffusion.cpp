@@ -17,6 +17,7 @@
 
 #include <Eigen/Eigenvalues>
 
+#include <algorithm>
 #include <limits>
 #include <map>
 
@@ -318,6 +319,47 @@ void check_special_cases()
   CHECK_THROWS(Kernel(mesh, HD::parameters::combine(HD::parameters::number_of_eigenpairs(20),
                                                     HD::parameters::progress_callback([](double) { return false; }))),
                std::runtime_error, "cancelled");
+  // A_t's construction reports on the same bar, forward to 1, with either kernel, and
+  // can be cancelled while the heat regions are built
+  for(HD::Heat_kernel_method method : {HD::Heat_kernel_method::spectral, HD::Heat_kernel_method::local})
+  {
+    std::vector<double> fractions;
+    const auto recorder = [&](double f) {
+      fractions.push_back(f);
+      return true;
+    };
+    const Diffusion recorded(mesh, HD::parameters::combine(HD::parameters::kernel_method(method),
+                                                           HD::parameters::number_of_eigenpairs(20),
+                                                           HD::parameters::progress_callback(recorder)));
+    CHECK(fractions.size() >= 2 && fractions.front() == 0. && fractions.back() == 1.);
+    CHECK(std::is_sorted(fractions.begin(), fractions.end()));
+    CHECK_THROWS(Diffusion(mesh, HD::parameters::combine(HD::parameters::kernel_method(method),
+                                                         HD::parameters::number_of_eigenpairs(20),
+                                                         HD::parameters::progress_callback([](double f) { return f < 0.9; }))),
+                 std::runtime_error, "heat regions cancelled");
+  }
+  // Heat_kernel_method::automatic, the default: local unless the eigenpairs are asked for
+  typedef HD::Heat_kernel_method Method;
+  CHECK(Diffusion(mesh).kernel_method() == Method::local);
+  CHECK(Diffusion(mesh, HD::parameters::kernel_method(Method::automatic)).kernel_method() == Method::local);
+  CHECK(Diffusion(mesh, HD::parameters::number_of_eigenpairs(20)).kernel_method() == Method::spectral);
+  CHECK(Diffusion(mesh, HD::parameters::coarse_vertex_count(0)).kernel_method() == Method::spectral);
+  CHECK(Diffusion(mesh, HD::parameters::scale_invariant_kernel(true)).kernel_method() == Method::spectral);
+  CHECK(Diffusion(mesh, HD::parameters::scale_invariant_kernel(false)).kernel_method() == Method::local);
+  CHECK(Diffusion(mesh, HD::parameters::combine(HD::parameters::kernel_method(Method::local),
+                                                HD::parameters::number_of_eigenpairs(20)))
+            .kernel_method() == Method::local);
+  CHECK(Diffusion(mesh, HD::parameters::combine(HD::parameters::kernel_method(Method::spectral),
+                                                HD::parameters::number_of_eigenpairs(20)))
+            .kernel_method() == Method::spectral);
+  std::vector<double> fractions;
+  const Diffusion from_kernel(small, 1., HD::parameters::progress_callback([&](double f) {
+                                fractions.push_back(f);
+                                return true;
+                              }));
+  CHECK(fractions.size() >= 2 && fractions.front() == 0. && fractions.back() == 1.);
+  CHECK_THROWS(Diffusion(small, 1., HD::parameters::progress_callback([](double) { return false; })),
+               std::runtime_error, "heat regions cancelled");
   // the free function equals the class
   for(Vertex v : mesh.vertices())
     in[v] = mesh.point(v).x();

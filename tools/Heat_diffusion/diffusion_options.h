@@ -102,7 +102,8 @@ struct Diffusion_options
 {
   double sigma = 0.1;
   double time = 1.;
-  HD::Heat_kernel_method method = HD::Heat_kernel_method::spectral;
+  HD::Heat_kernel_method method = HD::Heat_kernel_method::local;  // never automatic: resolved by the parser
+  bool automatic_method = true;                                   // --kernel not given
   std::size_t eigenpairs = 150;
   long long coarse = -1;  // -1: the package's automatic choice
   bool scale_invariant = false;
@@ -157,10 +158,18 @@ inline Diffusion_options parse_diffusion_options(const Arguments& args, const Di
   o.time_option = spec.time_alias && args.has("-t") ? "-t" : "--time";
   o.time = parse_number(o.time_option, args.value(o.time_option, spec.time_default), 0., true);
 
-  const std::string kernel = args.value("--kernel", "spectral");
-  if(kernel != "spectral" && kernel != "local")
-    throw Usage_error("--kernel must be 'spectral' or 'local', not '" + kernel + "'");
-  o.method = kernel == "local" ? HD::Heat_kernel_method::local : HD::Heat_kernel_method::spectral;
+  // The package's Heat_kernel_method::automatic: spectral when the eigenpairs are
+  // asked for (-m, --coarse, --scale-invariant), else local.
+  const std::string kernel = args.value("--kernel", "automatic");
+  if(kernel != "spectral" && kernel != "local" && kernel != "automatic")
+    throw Usage_error("--kernel must be 'automatic', 'spectral' or 'local', not '" + kernel + "'");
+  o.automatic_method = kernel == "automatic";
+  const bool eigenpairs_requested =
+      args.has("-m") || args.has("--coarse") || (spec.scale_invariant && args.flag("--scale-invariant"));
+  if(kernel == "local" || (o.automatic_method && spec.local_refusal.empty() && !eigenpairs_requested))
+    o.method = HD::Heat_kernel_method::local;
+  else
+    o.method = HD::Heat_kernel_method::spectral;
   if(o.local() && !spec.local_refusal.empty())
     throw Usage_error("--kernel local: " + spec.local_refusal);
 
@@ -207,10 +216,12 @@ inline std::string diffusion_options_help(const Diffusion_spec& spec)
                        ", on the mesh rescaled to area = vertex count (default " + spec.time_default + ")");
   if(spec.local_refusal.empty())
     h += help_option("--kernel K",
-                     "'spectral' (default): the paper's truncated kernel from M eigenpairs, accurate for large T "
-                     "only; 'local': each kernel column computed around its vertex, without eigenpairs and "
-                     "without truncation (relative error below 1e-4 measured for T from 0.5 to 4, where it is 1.1 "
-                     "to 9.5 times faster than 'spectral'; its cost per vertex grows with T). -m, --coarse and --scale-invariant concern the eigenpairs: with 'local' they are "
+                     "'local': each kernel column computed around its vertex, without eigenpairs and without "
+                     "truncation (relative error below 1e-4 measured for T from 0.5 to 4, where it is 1.1 to 9.5 "
+                     "times faster than 'spectral'; its cost per vertex grows with T); 'spectral': the paper's "
+                     "truncated kernel from M eigenpairs, accurate for large T only (T > 4 ln 10 / lambda_M); "
+                     "'automatic' (default): 'spectral' if -m, --coarse or --scale-invariant is given, else "
+                     "'local'. -m, --coarse and --scale-invariant concern the eigenpairs: with 'local' they are "
                      "usage errors");
   else
     h += help_option("--kernel K", "'spectral' only (the default): " + spec.local_refusal);
@@ -240,8 +251,9 @@ inline std::string common_options_help()
 {
   return help_option("--quiet", "print nothing but errors (and the JSON summary if asked for); no progress bar") +
          help_option("-h, --help", "this text") +
-         "\nA progress bar is shown on stderr for the eigen solve, the diffusion steps and other work longer\n"
-         "than a second, when stderr is a terminal (HEAT_DIFFUSION_PROGRESS=always|never overrides).\n";
+         "\nA progress bar is shown on stderr for every stage that lasts more than a second (the eigen solve\n"
+         "with the coarse level's simplification, the heat regions, the local kernel, the diffusion steps,\n"
+         "denoising), when stderr is a terminal (HEAT_DIFFUSION_PROGRESS=always|never overrides).\n";
 }
 
 // Calls `f` with the named parameters of the kernel and the diffusion (the package's
@@ -284,8 +296,7 @@ inline Diffusion_setup make_diffusion(const Mesh& mesh, const Diffusion_options&
   Diffusion_setup s;
   if(o.local())
   {
-    // No eigen solve: the NCC, L and B, then A_t column by column (the package has no
-    // progress callback for it yet).
+    // No eigen solve: the NCC, L and B, then A_t block by block of columns.
     Progress_bar progress("local kernel", !o.quiet);
     s.diffusion = for_input(input, [&] {
       return with_diffusion_parameters(o, progress, [&](const auto& np) { return std::make_unique<Diffusion>(mesh, np); });
@@ -296,7 +307,12 @@ inline Diffusion_setup make_diffusion(const Mesh& mesh, const Diffusion_options&
   {
     s.kernel = make_heat_kernel(mesh, o, input);
     timer.stop("ncc_and_eigen_solve");
-    s.diffusion = for_input(input, [&] { return std::make_unique<Diffusion>(*s.kernel, o.time); });
+    Progress_bar progress("heat regions", !o.quiet);
+    s.diffusion = for_input(input, [&] {
+      return std::make_unique<Diffusion>(
+          *s.kernel, o.time, HD::parameters::progress_callback(std::function<bool(double)>(std::ref(progress))));
+    });
+    progress.finish();
     timer.stop("operator");
   }
   return s;
@@ -328,6 +344,7 @@ inline void add_diffusion_json(Json_object& summary, const Diffusion_options& o,
                                const Heat_kernel* kernel)
 {
   summary.number("sigma", o.sigma).number("time", o.time).string("kernel", o.kernel_name());
+  summary.boolean("kernel_automatic", o.automatic_method);
   if(o.local())
     return;
   Json_object coarse;

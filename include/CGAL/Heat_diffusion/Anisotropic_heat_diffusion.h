@@ -11,6 +11,7 @@
 #include <CGAL/Heat_diffusion/internal/heat_operators.h>
 #include <CGAL/Heat_diffusion/internal/local_heat_kernel.h>
 #include <CGAL/Heat_diffusion/internal/parallel_for.h>
+#include <CGAL/Heat_diffusion/internal/progress.h>
 #include <CGAL/Heat_diffusion/normal_controlled_coordinates.h>
 #include <CGAL/Heat_diffusion/parameters.h>
 
@@ -18,6 +19,7 @@
 
 #include <algorithm>
 #include <cmath>
+#include <functional>
 #include <limits>
 #include <memory>
 #include <mutex>
@@ -45,10 +47,12 @@ struct Heat_region_statistics
 ///
 /// <b>Kernel.</b> \f$ h_t = \exp(-t B^{-1} L) B^{-1} \f$ of the edge-weighted operator of
 /// `Edge_weighted_heat_kernel`, evaluated as the named parameter `kernel_method` says:
-/// `Heat_kernel_method::spectral` (the default, the paper's m eigenpairs) or
+/// `Heat_kernel_method::spectral` (the paper's m eigenpairs) or
 /// `Heat_kernel_method::local` (each column on a patch around its source, with no
 /// eigen solve and no truncation: the NCC, \f$ L \f$ and \f$ B \f$ are all it computes; see
-/// the user manual for the accuracy and the cost of each).
+/// the user manual for the accuracy and the cost of each). By default
+/// (`Heat_kernel_method::automatic`) the kernel is local unless the eigenpairs are asked
+/// for.
 ///
 /// <b>Heat regions (eq. 15).</b> The region \f$ \Omega_j \f$ of a vertex \f$ v_j \f$ is grown
 /// breadth first from \f$ v_j \f$ over mesh edges, taking the vertices with
@@ -104,21 +108,31 @@ public:
   ///   \cgalParamNBegin{kernel_method}
   ///     \cgalParamDescription{how the heat kernel is evaluated}
   ///     \cgalParamType{`Heat_kernel_method`}
-  ///     \cgalParamDefault{`Heat_kernel_method::spectral`}
+  ///     \cgalParamDefault{`Heat_kernel_method::automatic`: spectral if `number_of_eigenpairs` or
+  ///       `coarse_vertex_count` is given or `scale_invariant_kernel` is `true`, else local}
   ///   \cgalParamNEnd
   ///   \cgalParamNBegin{sigma, vertex_point_map, vertex_index_map, vertex_normal_map, vertex_normal_rule, geom_traits}
   ///     \cgalParamDescription{as for `Edge_weighted_heat_kernel`, with either method}
   ///   \cgalParamNEnd
-  ///   \cgalParamNBegin{number_of_eigenpairs, scale_invariant_kernel, progress_callback, ...}
+  ///   \cgalParamNBegin{number_of_eigenpairs, scale_invariant_kernel, coarse_vertex_count}
   ///     \cgalParamDescription{as for `Edge_weighted_heat_kernel`, for the spectral method; the
   ///       local method ignores them, except `scale_invariant_kernel(true)`, which it rejects
   ///       (eq. 14 needs the eigenvalues)}
+  ///   \cgalParamNEnd
+  ///   \cgalParamNBegin{progress_callback}
+  ///     \cgalParamDescription{called on the calling thread with the fraction done of the whole
+  ///       construction (spectral: the eigenpairs, the coarse level's simplification included,
+  ///       then the heat regions; local: the heat regions, block by block of sources);
+  ///       returning `false` cancels the construction with a `std::runtime_error`}
+  ///     \cgalParamType{a callable `bool(double)`}
+  ///     \cgalParamDefault{none}
   ///   \cgalParamNEnd
   /// \cgalNamedParamsEnd
   ///
   /// \throws std::invalid_argument on a mesh the package cannot process (see
   ///   `Normal_controlled_coordinates`) or an invalid parameter.
-  /// \throws std::runtime_error if the eigen solve fails or is cancelled (spectral method).
+  /// \throws std::runtime_error if the eigen solve fails (spectral method) or if the
+  ///   construction is cancelled.
   ///
   /// Complexity: that of `Edge_weighted_heat_kernel` plus the construction from a kernel
   /// below (spectral); linear in the number of vertices for a fixed t (local: per
@@ -126,18 +140,23 @@ public:
   /// grows like t, and three block solves; parallel with TBB).
   template <typename NamedParameters = parameters::Default_named_parameters>
   explicit Anisotropic_heat_diffusion(const TriangleMesh& tm, const NamedParameters& np = parameters::default_values())
-    : method_(parameters::choose_parameter(parameters::get_parameter(np, internal_np::kernel_method),
-                                           Heat_kernel_method::spectral))
+    : method_(internal::resolve_kernel_method<NamedParameters>(parameters::choose_parameter(
+          parameters::get_parameter(np, internal_np::kernel_method), Heat_kernel_method::automatic),
+          parameters::choose_parameter(parameters::get_parameter(np, internal_np::scale_invariant_kernel), false)))
   {
     using parameters::choose_parameter;
     using parameters::get_parameter;
     const double t = checked_time(choose_parameter(get_parameter(np, internal_np::time), 1.));
+    const internal::Progress progress(
+        choose_parameter(get_parameter(np, internal_np::progress_callback), std::function<bool(double)>()));
     if(method_ == Heat_kernel_method::spectral)
     {
-      owned_kernel_ = std::make_shared<Heat_kernel>(tm, np);
+      // One progress bar: the kernel (eigen solve) takes most of it, the regions the rest.
+      owned_kernel_ = std::make_shared<Heat_kernel>(
+          tm, parameters::combine(np, parameters::progress_callback(progress.part(0., 0.8).as_callback())));
       kernel_ = owned_kernel_.get();
       ncc_ = &kernel_->normal_controlled_coordinates();
-      build_spectral(t);
+      build_spectral(t, progress.part(0.8, 1.));
       return;
     }
     if(method_ != Heat_kernel_method::local)
@@ -155,19 +174,32 @@ public:
       internal::throw_invalid_input("Anisotropic_heat_diffusion: the mesh is empty");
     // L and B live only while A_t is built: A_t is all the diffusion needs.
     const internal::Heat_operators operators = internal::assemble_heat_operators(mesh, ncc_->data(), sigma);
-    build_local(t, operators);
+    build_local(t, operators, progress);
   }
 
   /// Builds \f$ A_t \f$ from an existing (spectral) kernel, which must outlive this object.
+  ///
+  /// \cgalNamedParamsBegin
+  ///   \cgalParamNBegin{progress_callback}
+  ///     \cgalParamDescription{called with the fraction done while the heat regions are
+  ///       built; returning `false` cancels the construction with a `std::runtime_error`}
+  ///     \cgalParamType{a callable `bool(double)`}
+  ///     \cgalParamDefault{none}
+  ///   \cgalParamNEnd
+  /// \cgalNamedParamsEnd
   ///
   /// \throws std::invalid_argument if `t` is not positive and finite.
   ///
   /// Complexity: linear in the number of vertices for a fixed t (one breadth-first
   /// search per vertex, over its region and the region's one-ring; parallel with TBB).
-  Anisotropic_heat_diffusion(const Heat_kernel& kernel, double t)
+  template <typename NamedParameters = parameters::Default_named_parameters>
+  Anisotropic_heat_diffusion(const Heat_kernel& kernel, double t,
+                             const NamedParameters& np = parameters::default_values())
     : kernel_(&kernel), ncc_(&kernel.normal_controlled_coordinates()), method_(Heat_kernel_method::spectral)
   {
-    build_spectral(checked_time(t));
+    build_spectral(checked_time(t), internal::Progress(parameters::choose_parameter(
+                                        parameters::get_parameter(np, internal_np::progress_callback),
+                                        std::function<bool(double)>())));
   }
 
   /// The largest heat region, in vertices.
@@ -177,7 +209,7 @@ public:
   double time() const { return time_; }
   /// The threshold \f$ \tau(t) = 0.01/(1+t) \f$.
   double threshold() const { return 0.01 / (1. + time_); }
-  /// How the heat kernel was evaluated.
+  /// How the heat kernel was evaluated: `spectral` or `local`, never `automatic`.
   Heat_kernel_method kernel_method() const { return method_; }
   /// The spectral heat kernel.
   /// \throws std::logic_error if `kernel_method()` is `Heat_kernel_method::local`, which has none.
@@ -370,7 +402,7 @@ private:
     }
   };
 
-  void build_spectral(double t)
+  void build_spectral(double t, const internal::Progress& progress)
   {
     time_ = t;
     const Eigen::Index m = Eigen::Index(kernel_->number_of_eigenpairs());
@@ -383,29 +415,31 @@ private:
                                       kernel_->is_scale_invariant()};
       for(Eigen::Index k = 0; k < m; ++k)
         columns.psi.col(k) *= std::exp(-0.5 * kernel_->decay_rate(std::size_t(k)) * t);
-      build_from_columns(columns, columns.relative, order);
+      build_from_columns(columns, columns.relative, order, progress);
       return;
     }
     Spectral_columns columns{kernel_->eigenvectors(), kernel_, kernel_->is_scale_invariant()};
     for(Eigen::Index k = 0; k < m; ++k)
       columns.psi.col(k) *= std::exp(-0.5 * kernel_->decay_rate(std::size_t(k)) * t);
-    build_from_columns(columns, columns.relative, order);
+    build_from_columns(columns, columns.relative, order, progress);
   }
 
-  void build_local(double t, const internal::Heat_operators& operators)
+  void build_local(double t, const internal::Heat_operators& operators, const internal::Progress& progress)
   {
     time_ = t;
     const internal::Local_heat_kernel kernel(ncc_->indexed_mesh(), operators.stiffness, operators.mass, t);
     // Sources in breadth-first order: consecutive sources share most of their patches,
     // which then stay in cache.
-    build_from_columns(Local_columns{kernel}, false, internal::breadth_first_order(ncc_->indexed_mesh()));
+    build_from_columns(Local_columns{kernel}, false, internal::breadth_first_order(ncc_->indexed_mesh()), progress);
   }
 
   // Grows the heat region of every source j and fills column j of A_t. `columns`
   // evaluates h_t(j, i) once prepare(j) has run; `order` is the order of the sources
   // (results do not depend on it: each source writes its own column).
+  // `progress` is told after each block of sources.
   template <typename Columns>
-  void build_from_columns(const Columns& kernel, bool relative, const std::vector<std::size_t>& order)
+  void build_from_columns(const Columns& kernel, bool relative, const std::vector<std::size_t>& order,
+                          const internal::Progress& progress)
   {
     const internal::Indexed_mesh& mesh = ncc_->indexed_mesh();
     const std::size_t n = mesh.number_of_vertices();
@@ -418,7 +452,9 @@ private:
     };
     // Memory (1.66M vertices, ~58 entries a column: 96M entries). The columns are
     // computed in blocks of sources, in parallel within a block, and appended to
-    // large fixed-size chunks; the per-column vectors are reused from block to block.
+    // large fixed-size chunks; the per-column vectors and the per-thread scratch are
+    // reused from block to block. Blocks are small enough for the progress to move
+    // about every 1 % at that size.
     // A_t is then written once, in compressed rows (what the diffusion steps read),
     // and the chunks are freed. One small vector per column kept to the end would
     // leave their memory in the allocator's arenas (1.5 GB at that size), and a
@@ -428,16 +464,19 @@ private:
     {
       std::size_t chunk = 0, offset = 0, size = 0;
     };
-    constexpr std::size_t block_size = 65536, chunk_capacity = std::size_t(1) << 22;
+    constexpr std::size_t block_size = 16384, chunk_capacity = std::size_t(1) << 22;
     std::vector<Placement> placement(n);
     std::vector<std::vector<Storage_index> > chunk_rows;
     std::vector<std::vector<double> > chunk_values;
     std::vector<std::vector<std::pair<std::size_t, double> > > columns((std::min)(block_size, n));
+    internal::Per_thread_scratch<Scratch> scratches(
+        [&] { return Scratch{std::vector<std::size_t>(n, 0), 0, {}, kernel.make_workspace()}; });
+    progress.report(0., "the construction of the heat regions");
     for(std::size_t first = 0; first < n; first += block_size)
     {
       const std::size_t count = (std::min)(block_size, n - first);
       internal::parallel_for_with_scratch(
-          count, [&] { return Scratch{std::vector<std::size_t>(n, 0), 0, {}, kernel.make_workspace()}; },
+          count, scratches,
           [&](std::size_t position, Scratch& s) {
             const std::size_t j = order[first + position];
             kernel.prepare(j, s.kernel_workspace);
@@ -496,6 +535,7 @@ private:
           chunk_values.back().push_back(entry.second);
         }
       }
+      progress.report(double(first + count) / double(n), "the construction of the heat regions");
     }
     std::vector<std::vector<std::pair<std::size_t, double> > >().swap(columns);
 
@@ -580,7 +620,7 @@ private:
 ///   \cgalParamNBegin{kernel_method}
 ///     \cgalParamDescription{how the heat kernel is evaluated (see `Anisotropic_heat_diffusion`)}
 ///     \cgalParamType{`Heat_kernel_method`}
-///     \cgalParamDefault{`Heat_kernel_method::spectral`}
+///     \cgalParamDefault{`Heat_kernel_method::automatic`}
 ///   \cgalParamNEnd
 ///   \cgalParamNBegin{sigma, number_of_eigenpairs, scale_invariant_kernel, progress_callback, vertex_point_map, ...}
 ///     \cgalParamDescription{as for `Edge_weighted_heat_kernel`}

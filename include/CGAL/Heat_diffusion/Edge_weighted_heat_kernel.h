@@ -9,6 +9,7 @@
 #include <CGAL/Heat_diffusion/internal/coarse_level.h>
 #include <CGAL/Heat_diffusion/internal/generalized_eigensolver.h>
 #include <CGAL/Heat_diffusion/internal/heat_operators.h>
+#include <CGAL/Heat_diffusion/internal/progress.h>
 #include <CGAL/Heat_diffusion/normal_controlled_coordinates.h>
 #include <CGAL/Heat_diffusion/parameters.h>
 
@@ -113,7 +114,8 @@ public:
   ///     \cgalParamDefault{`automatic_coarse_vertex_count` for meshes of more than `automatic_coarse_threshold` vertices, else 0}
   ///   \cgalParamNEnd
   ///   \cgalParamNBegin{progress_callback}
-  ///     \cgalParamDescription{called during the eigen solve with the fraction done; returning `false` cancels the construction with a `std::runtime_error`}
+  ///     \cgalParamDescription{called on the calling thread with the fraction done of the construction (the eigen solve, and the
+  ///       coarse level's simplification if any); returning `false` cancels the construction with a `std::runtime_error`}
   ///     \cgalParamType{a callable `bool(double)`}
   ///     \cgalParamDefault{none}
   ///   \cgalParamNEnd
@@ -144,8 +146,8 @@ public:
     sigma_ = choose_parameter(get_parameter(np, internal_np::sigma), 0.1);
     const double requested_m = double(choose_parameter(get_parameter(np, internal_np::number_of_eigenpairs), 150));
     scale_invariant_ = choose_parameter(get_parameter(np, internal_np::scale_invariant_kernel), false);
-    const std::function<bool(double)> progress =
-        choose_parameter(get_parameter(np, internal_np::progress_callback), std::function<bool(double)>());
+    const internal::Progress progress(
+        choose_parameter(get_parameter(np, internal_np::progress_callback), std::function<bool(double)>()));
     if(!(sigma_ > 0) || std::isnan(sigma_))
       internal::throw_invalid_input("Edge_weighted_heat_kernel: sigma must be positive");
     if(!(requested_m >= 1))
@@ -170,7 +172,8 @@ public:
     if(coarse_vertices_ == 0)
     {
       internal::Generalized_eigenpairs pairs = internal::compute_smallest_generalized_eigenpairs(
-          operators_.stiffness, operators_.mass, Eigen::Index((std::min)(requested_m, double(n))), progress);
+          operators_.stiffness, operators_.mass, Eigen::Index((std::min)(requested_m, double(n))),
+          progress.as_callback());
       timings_.eigen_solve = lap();
       eigenvalues_ = std::move(pairs.eigenvalues);
       eigenvectors_ = std::move(pairs.eigenvectors);
@@ -178,7 +181,10 @@ public:
     }
     else
     {
-      const internal::Coarse_level level = internal::make_coarse_level(mesh, coarse_vertices_);
+      // Shares of the progress bar, from the stages' shares of the time at 100k-1.6M
+      // vertices: simplification 36-63 %, eigen solve 55-23 %, Rayleigh-Ritz 9-14 %.
+      const internal::Coarse_level level =
+          internal::make_coarse_level(mesh, coarse_vertices_, progress.part(0., 0.5));
       coarse_vertices_ = level.mesh.number_of_vertices();
       timings_.simplification = lap();
       const internal::Ncc_data coarse_ncc =
@@ -188,11 +194,13 @@ public:
       timings_.operators += lap();
       internal::Generalized_eigenpairs pairs = internal::compute_smallest_generalized_eigenpairs(
           coarse_operators.stiffness, coarse_operators.mass,
-          Eigen::Index((std::min)(requested_m, double(coarse_vertices_))), progress);
+          Eigen::Index((std::min)(requested_m, double(coarse_vertices_))),
+          progress.part(0.5, 0.88).as_callback());
       used_dense_solver_ = pairs.dense_solver;
       timings_.eigen_solve = lap();
       rayleigh_ritz_on_fine_mesh(level.prolongation, pairs.eigenvectors);
       timings_.rayleigh_ritz = lap();
+      progress.report(1., "the coarse level");
     }
     number_of_components_ = count_components(mesh);
     // L is positive semi-definite: the solver's tiny negative values are rounding

@@ -374,7 +374,7 @@ inline void fit_vertices_to_normals(const Indexed_mesh& mesh, const Face_adjacen
 ///   \cgalParamNEnd
 ///   \cgalParamNBegin{kernel_method, coarse_vertex_count}
 ///     \cgalParamDescription{signature diffusion only: how the heat kernel of each iteration is evaluated, and its coarse level (see `Anisotropic_heat_diffusion` and `Edge_weighted_heat_kernel`)}
-///     \cgalParamDefault{`Heat_kernel_method::spectral`; the automatic coarse level}
+///     \cgalParamDefault{`Heat_kernel_method::automatic` (local unless `number_of_eigenpairs` or `coarse_vertex_count` is given); the automatic coarse level}
 ///   \cgalParamNEnd
 ///   \cgalParamNBegin{anchor_weight}
 ///     \cgalParamDescription{signature diffusion only: the weight of the positional anchors of the reconstruction (see `reconstruct_from_normal_signature()`): smaller moves the vertices further per iteration}
@@ -450,8 +450,8 @@ void denoise_mesh(TriangleMesh& tm, const NamedParameters& np = parameters::defa
   const double steps = double(choose_parameter(get_parameter(np, internal_np::number_of_steps), filtering ? 2 : 1));
   const double eigenpairs = double(choose_parameter(get_parameter(np, internal_np::number_of_eigenpairs), 150));
   const double anchor_weight = choose_parameter(get_parameter(np, internal_np::anchor_weight), 0.7);
-  const Heat_kernel_method kernel_method =
-      choose_parameter(get_parameter(np, internal_np::kernel_method), Heat_kernel_method::spectral);
+  const Heat_kernel_method kernel_method = internal::resolve_kernel_method<NamedParameters>(
+      choose_parameter(get_parameter(np, internal_np::kernel_method), Heat_kernel_method::automatic), false);
   // -1: the automatic choice of Edge_weighted_heat_kernel.
   const double coarse_vertex_count = double(choose_parameter(get_parameter(np, internal_np::coarse_vertex_count), -1));
   const double user_normal_sigma = choose_parameter(get_parameter(np, internal_np::normal_sigma), 0.);

@@ -74,8 +74,9 @@ CGAL_HEAT_DIFFUSION_NAMED_PARAMETER(vertex_normal_rule_t, vertex_normal_rule)
 CGAL_HEAT_DIFFUSION_NAMED_PARAMETER(scale_invariant_kernel_t, scale_invariant_kernel)
 /// How `Anisotropic_heat_diffusion` evaluates the heat kernel, a `Heat_kernel_method`.
 CGAL_HEAT_DIFFUSION_NAMED_PARAMETER(kernel_method_t, kernel_method)
-/// A callable `bool(double fraction_done)` called during long computations (the
-/// eigen solve); returning `false` cancels them with an exception.
+/// A callable `bool(double fraction_done)` called on the calling thread during long
+/// computations (the eigenpairs and the coarse level, the heat regions, denoising);
+/// returning `false` cancels them with an exception.
 CGAL_HEAT_DIFFUSION_NAMED_PARAMETER(progress_callback_t, progress_callback)
 
 /// The threshold c of the feature criterion \f$ F^k(i) > c \max F^k \f$ (paper, section 7).

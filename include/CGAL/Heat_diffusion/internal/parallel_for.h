@@ -34,14 +34,43 @@ void parallel_for(std::size_t n, const Function& f)
 #endif
 }
 
-// As parallel_for, with a scratch object per thread, made by make_scratch() and
-// passed to f(i, scratch) (e.g. the marks of a breadth-first search).
-template <typename MakeScratch, typename Function>
-void parallel_for_with_scratch(std::size_t n, const MakeScratch& make_scratch, const Function& f)
+// One scratch object per thread (e.g. the marks of a breadth-first search), made by
+// make_scratch() on a thread's first use and kept across calls of
+// parallel_for_with_scratch(), so that work split into blocks allocates it once.
+template <typename Scratch>
+class Per_thread_scratch
+{
+public:
+  template <typename MakeScratch>
+  explicit Per_thread_scratch(const MakeScratch& make_scratch)
+#ifdef CGAL_LINKED_WITH_TBB
+    : scratches_(make_scratch)
+#else
+    : scratch_(make_scratch())
+#endif
+  {}
+  Scratch& local()
+  {
+#ifdef CGAL_LINKED_WITH_TBB
+    return scratches_.local();
+#else
+    return scratch_;
+#endif
+  }
+
+private:
+#ifdef CGAL_LINKED_WITH_TBB
+  tbb::enumerable_thread_specific<Scratch> scratches_;
+#else
+  Scratch scratch_;
+#endif
+};
+
+// As parallel_for, calling f(i, scratch) with the scratch object of the thread.
+template <typename Scratch, typename Function>
+void parallel_for_with_scratch(std::size_t n, Per_thread_scratch<Scratch>& scratches, const Function& f)
 {
 #ifdef CGAL_LINKED_WITH_TBB
-  typedef decltype(make_scratch()) Scratch;
-  tbb::enumerable_thread_specific<Scratch> scratches(make_scratch);
   tbb::parallel_for(tbb::blocked_range<std::size_t>(0, n, 256),
                     [&](const tbb::blocked_range<std::size_t>& range) {
                       Scratch& scratch = scratches.local();
@@ -49,7 +78,7 @@ void parallel_for_with_scratch(std::size_t n, const MakeScratch& make_scratch, c
                         f(i, scratch);
                     });
 #else
-  auto scratch = make_scratch();
+  Scratch& scratch = scratches.local();
   for(std::size_t i = 0; i < n; ++i)
     f(i, scratch);
 #endif
