@@ -23,6 +23,8 @@
 #include <CGAL/Exact_predicates_inexact_constructions_kernel.h>
 #include <CGAL/Surface_mesh.h>
 
+#include "mesh_measures.h"
+
 #include <CGAL/Heat_diffusion/denoising.h>
 #include <CGAL/Polygon_mesh_processing/IO/polygon_mesh_io.h>
 #include <CGAL/Polygon_mesh_processing/compute_normal.h>
@@ -50,26 +52,12 @@ typedef Mesh::Vertex_index Vertex;
 
 namespace {
 
-double mean_edge_length(const Mesh& mesh)
-{
-  double sum = 0;
-  for(auto e : mesh.edges())
-    sum += std::sqrt(CGAL::squared_distance(mesh.point(mesh.vertex(e, 0)), mesh.point(mesh.vertex(e, 1))));
-  return sum / double(mesh.number_of_edges());
-}
-
-// The noise of the tests (test_support::add_normal_noise): Gaussian, along the
-// vertex normals, of standard deviation `relative_sigma` mean edge lengths, seeded.
+// The noise of the tests: Gaussian, along the vertex normals, of standard deviation
+// `relative_sigma` mean edge lengths, seeded.
 Mesh noisy_copy(const Mesh& clean, double relative_sigma, unsigned seed)
 {
   Mesh mesh = clean;
-  auto normals = mesh.add_property_map<Vertex, Vector_3>("v:noise_normal").first;
-  PMP::compute_vertex_normals(mesh, normals);
-  std::mt19937 generator(seed);
-  std::normal_distribution<double> gaussian(0., relative_sigma * mean_edge_length(clean));
-  for(auto v : mesh.vertices())
-    mesh.point(v) = mesh.point(v) + gaussian(generator) * normals[v];
-  mesh.remove_property_map(normals);
+  test_support::add_normal_noise(mesh, relative_sigma, seed);
   return mesh;
 }
 
@@ -120,47 +108,6 @@ std::string format(double x, int precision = 3)
   return os.str();
 }
 
-// Bilateral mesh denoising (Fleishman, Drori, Cohen-Or, SIGGRAPH 2003): each vertex
-// moves along its normal n by the bilaterally weighted mean of the heights
-// h = n . (q - v) of the vertices q within distance 2 sigma_c (reached over edges),
-// with weights exp(-|q - v|^2 / 2 sigma_c^2) exp(-h^2 / 2 sigma_s^2).
-void bilateral_iteration(Mesh& mesh, double sigma_c, double sigma_s)
-{
-  auto normals = mesh.add_property_map<Vertex, Vector_3>("v:bilateral_normal").first;
-  PMP::compute_vertex_normals(mesh, normals);
-  std::vector<Point_3> moved(mesh.number_of_vertices());
-  std::vector<std::size_t> stamp(mesh.number_of_vertices(), std::size_t(-1));
-  std::vector<Vertex> queue;
-  const double radius2 = 4 * sigma_c * sigma_c;
-  for(Vertex v : mesh.vertices())
-  {
-    const Point_3& p = mesh.point(v);
-    const Vector_3& n = normals[v];
-    double sum = 0, normaliser = 0;
-    queue.assign(1, v);
-    stamp[v.idx()] = v.idx();
-    for(std::size_t k = 0; k < queue.size(); ++k)
-      for(Vertex q : CGAL::vertices_around_target(mesh.halfedge(queue[k]), mesh))
-      {
-        if(stamp[q.idx()] == v.idx())
-          continue;
-        stamp[q.idx()] = v.idx();
-        const double d2 = CGAL::squared_distance(p, mesh.point(q));
-        if(d2 > radius2)
-          continue;
-        queue.push_back(q);
-        const double h = n * (mesh.point(q) - p);
-        const double w = std::exp(-d2 / (2 * sigma_c * sigma_c)) * std::exp(-h * h / (2 * sigma_s * sigma_s));
-        sum += w * h;
-        normaliser += w;
-      }
-    moved[v.idx()] = normaliser > 0 ? p + (sum / normaliser) * n : p;
-  }
-  for(Vertex v : mesh.vertices())
-    mesh.point(v) = moved[v.idx()];
-  mesh.remove_property_map(normals);
-}
-
 const std::vector<unsigned> iteration_counts = {1, 2, 3, 5, 10};
 
 Score best_bilateral(const Mesh& clean, const Mesh& noisy, double edge)
@@ -173,7 +120,7 @@ Score best_bilateral(const Mesh& clean, const Mesh& noisy, double edge)
       const auto start = std::chrono::steady_clock::now();
       for(unsigned it = 1; it <= iteration_counts.back(); ++it)
       {
-        bilateral_iteration(mesh, c * edge, s * edge);
+        test_support::bilateral_denoising_iteration(mesh, c * edge, s * edge);
         if(std::find(iteration_counts.begin(), iteration_counts.end(), it) != iteration_counts.end())
           keep_best(best, score(clean, mesh, edge),
                     "sc " + format(c) + "e, ss " + format(s) + "e, " + std::to_string(it) + " it",
@@ -299,7 +246,7 @@ int main(int argc, char** argv)
       std::cerr << "cannot read the triangle mesh " << file << std::endl;
       return EXIT_FAILURE;
     }
-    const double edge = mean_edge_length(clean);
+    const double edge = test_support::mean_edge_length(clean);
     const std::string name = file.substr(file.find_last_of('/') + 1) + " (" +
                              std::to_string(clean.number_of_vertices()) + ")";
     for(double noise : {0.1, 0.2, 0.3, 0.5})

@@ -27,6 +27,8 @@
 #include <CGAL/Polygon_mesh_processing/compute_normal.h>
 #include <CGAL/Surface_mesh.h>
 
+#include "mesh_measures.h"
+
 #include <chrono>
 #include <cmath>
 #include <cstdio>
@@ -80,37 +82,6 @@ Run run_features(const Mesh& input, double sigma, const Kernel_setting& kernel)
   return run;
 }
 
-std::vector<std::set<std::size_t> > two_rings(const Mesh& mesh)
-{
-  std::vector<std::set<std::size_t> > rings(mesh.number_of_vertices());
-  for(Vertex v : mesh.vertices())
-    for(Vertex u : vertices_around_target(v, mesh))
-    {
-      rings[v.idx()].insert(u.idx());
-      for(Vertex w : vertices_around_target(u, mesh))
-        rings[v.idx()].insert(w.idx());
-    }
-  return rings;
-}
-
-// How many vertices of `wanted` have a vertex of `found` within their 2-ring (itself included).
-std::size_t found_nearby(const std::vector<Vertex>& wanted, const std::vector<Vertex>& found,
-                         const std::vector<std::set<std::size_t> >& rings)
-{
-  std::set<std::size_t> found_indices;
-  for(Vertex v : found)
-    found_indices.insert(v.idx());
-  std::size_t hits = 0;
-  for(Vertex v : wanted)
-  {
-    bool hit = found_indices.count(v.idx()) != 0;
-    for(std::size_t u : rings[v.idx()])
-      hit = hit || found_indices.count(u) != 0;
-    hits += hit ? 1 : 0;
-  }
-  return hits;
-}
-
 // The share of the features of `wanted` (both types) that `found` has with the same
 // type within their 2-ring; NaN if `wanted` has none.
 double share_found(const Features& wanted, const Features& found, const std::vector<std::set<std::size_t> >& rings)
@@ -118,23 +89,9 @@ double share_found(const Features& wanted, const Features& found, const std::vec
   const std::size_t total = wanted.convex.size() + wanted.concave.size();
   if(total == 0)
     return std::nan("");
-  return double(found_nearby(wanted.convex, found.convex, rings) + found_nearby(wanted.concave, found.concave, rings)) /
+  return double(test_support::count_found_nearby(wanted.convex, found.convex, rings) +
+                test_support::count_found_nearby(wanted.concave, found.concave, rings)) /
          double(total);
-}
-
-void add_normal_noise(Mesh& mesh, double relative_sigma, unsigned seed)
-{
-  double length = 0;
-  for(auto e : mesh.edges())
-    length += std::sqrt(CGAL::to_double(CGAL::squared_distance(mesh.point(source(e, mesh)), mesh.point(target(e, mesh)))));
-  length /= double(mesh.number_of_edges());
-  auto normals = mesh.add_property_map<Vertex, K::Vector_3>("v:noise_normal").first;
-  PMP::compute_vertex_normals(mesh, normals);
-  std::mt19937 generator(seed);
-  std::normal_distribution<double> gaussian(0., relative_sigma * length);
-  for(Vertex v : mesh.vertices())
-    mesh.point(v) = mesh.point(v) + gaussian(generator) * normals[v];
-  mesh.remove_property_map(normals);
 }
 
 std::string percent(double share)
@@ -188,7 +145,7 @@ int main(int argc, char* argv[])
       Mesh mesh;
       if(!PMP::IO::read_polygon_mesh(data + "/" + name, mesh) || mesh.is_empty())
         throw std::runtime_error("cannot read " + data + "/" + name);
-      const auto rings = two_rings(mesh);
+      const auto rings = test_support::two_rings(mesh);
       for(double sigma : {0.1, 1.})
       {
         const Run a = run_features(mesh, sigma, spectral);
@@ -215,7 +172,7 @@ int main(int argc, char* argv[])
     {
       Mesh mesh;
       PMP::IO::read_polygon_mesh(data + "/" + name, mesh);
-      const auto rings = two_rings(mesh);
+      const auto rings = test_support::two_rings(mesh);
       for(const Kernel_setting& kernel : {spectral, local})
       {
         const Features clean = run_features(mesh, 1., kernel).features[1];
@@ -223,10 +180,11 @@ int main(int argc, char* argv[])
         for(unsigned seed = 1; seed <= seeds; ++seed)
         {
           Mesh noisy = mesh;
-          add_normal_noise(noisy, 0.1, seed);
+          test_support::add_normal_noise(noisy, 0.1, seed);
           const Features found = run_features(noisy, 1., kernel).features[1];
           noisy_total += found.convex.size() + found.concave.size();
-          hits += found_nearby(clean.convex, found.convex, rings) + found_nearby(clean.concave, found.concave, rings);
+          hits += test_support::count_found_nearby(clean.convex, found.convex, rings) +
+                  test_support::count_found_nearby(clean.concave, found.concave, rings);
         }
         const std::size_t clean_total = clean.convex.size() + clean.concave.size();
         std::printf("%-14s %-15s %9zu %12.1f %12s\n", name.c_str(), kernel.name, clean_total,
@@ -246,7 +204,7 @@ int main(int argc, char* argv[])
     {
       Mesh mesh;
       PMP::IO::read_polygon_mesh(data + "/" + name, mesh);
-      const auto rings = two_rings(mesh);
+      const auto rings = test_support::two_rings(mesh);
       auto ns = mesh.add_property_map<Vertex, double>("v:ns", 0.).first;
       HD::compute_normal_signature(mesh, ns);
       auto kernel_of = [&](std::size_t coarse, double& seconds) {

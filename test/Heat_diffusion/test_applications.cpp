@@ -60,21 +60,6 @@ Eigen::VectorXd normal_signature(const HD::Anisotropic_heat_diffusion<TriangleMe
   return f;
 }
 
-// The 2-ring of every vertex of a Surface_mesh, without the vertex itself.
-std::vector<std::set<std::size_t> > two_rings(const Mesh& mesh)
-{
-  std::vector<std::set<std::size_t> > rings(mesh.number_of_vertices());
-  for(Vertex v : mesh.vertices())
-    for(Vertex u : vertices_around_target(v, mesh))
-    {
-      rings[v.idx()].insert(u.idx());
-      for(Vertex w : vertices_around_target(u, mesh))
-        if(w != v)
-          rings[v.idx()].insert(w.idx());
-    }
-  return rings;
-}
-
 // Per vertex: +1 robustly convex, -1 robustly concave, 0 robustly neither, and 2 if
 // the verdict hangs on a near-tie: a comparison of the criterion decided by less than
 // tie_tolerance max|F| (evaluated with every comparison shifted against and in
@@ -150,7 +135,7 @@ std::size_t count(const std::vector<int>& verdict, int value)
 void check_invariance()
 {
   const Mesh mesh = test_support::load<Mesh>("fandisk.off");
-  const auto rings = two_rings(mesh);
+  const auto rings = test_support::two_rings(mesh);
   const Diffusion reference(mesh, feature_parameters());
   const Eigen::VectorXd ns = normal_signature(reference);
   const std::vector<Eigen::VectorXd> reference_fields = reference.diffuse(ns, scales);
@@ -236,27 +221,13 @@ void check_invariance()
 void check_noise_robustness()
 {
   const Mesh clean = test_support::load<Mesh>("fandisk.off");
-  const auto rings = two_rings(clean);
+  const auto rings = test_support::two_rings(clean);
   auto features_at_10 = [](const Mesh& input, double threshold) {
     Mesh mesh = input;
     auto ns = mesh.add_property_map<Vertex, double>("v:ns", 0.).first;
     HD::compute_normal_signature(mesh, ns);
     const Diffusion diffusion(mesh, feature_parameters());
     return HD::detect_multiscale_features(diffusion, ns, {10}, HD::parameters::feature_threshold(threshold)).front();
-  };
-  auto redetected = [&](const std::vector<Vertex>& clean_set, const std::vector<Vertex>& noisy_set) {
-    std::set<std::size_t> noisy_indices;
-    for(Vertex v : noisy_set)
-      noisy_indices.insert(v.idx());
-    std::size_t hits = 0;
-    for(Vertex v : clean_set)
-    {
-      bool hit = noisy_indices.count(v.idx()) != 0;
-      for(std::size_t j : rings[v.idx()])
-        hit = hit || noisy_indices.count(j) != 0;
-      hits += hit ? 1 : 0;
-    }
-    return hits;
   };
   for(double threshold : {0.8, 0.5, 0.2})
   {
@@ -269,7 +240,8 @@ void check_noise_robustness()
       test_support::add_normal_noise(noisy, 0.1, seed);
       const Features found = features_at_10(noisy, threshold);
       noisy_total += found.convex.size() + found.concave.size();
-      hits += redetected(reference.convex, found.convex) + redetected(reference.concave, found.concave);
+      hits += test_support::count_found_nearby(reference.convex, found.convex, rings) +
+              test_support::count_found_nearby(reference.concave, found.concave, rings);
     }
     const double fraction = double(hits) / double(3 * clean_total);
     std::cout << "noise 0.1 mean edge length, k = 10, c = " << threshold << ": " << clean_total
@@ -325,7 +297,7 @@ void check_kernel(const std::string& name)
   typedef CGAL::Surface_mesh<typename OtherKernel::Point_3> Other_mesh;
   typedef typename Other_mesh::Vertex_index Other_vertex;
   const Mesh mesh = test_support::load<Mesh>("fandisk.off");
-  const auto rings = two_rings(mesh);
+  const auto rings = test_support::two_rings(mesh);
   // Copied by hand: copy_face_graph() does not keep the vertex order.
   Other_mesh other;
   for(Vertex v : mesh.vertices())
@@ -587,7 +559,7 @@ void check_local_kernel_features()
   CHECK(features.size() == scales.size());
   const Eigen::VectorXd f0 = normal_signature_of(mesh);
   const std::vector<Eigen::VectorXd> fields = diffusion.diffuse(f0, scales);
-  const auto rings = two_rings(mesh);
+  const auto rings = test_support::two_rings(mesh);
   for(std::size_t s = 0; s < scales.size(); ++s)
   {
     // Every reported convex feature is a 2-ring maximum of the diffused field, every

@@ -86,46 +86,6 @@ double best_smooth_shape(const Mesh& clean, const Mesh& noisy, std::string& best
   return best_mad;
 }
 
-// Bilateral mesh denoising (Fleishman, Drori, Cohen-Or 2003), as in
-// benchmark_denoising: each vertex moves along its normal n by the bilaterally
-// weighted mean of the heights h = n . (q - v) of the vertices q within 2 sigma_c.
-void bilateral_iteration(Mesh& mesh, double sigma_c, double sigma_s)
-{
-  typedef Mesh::Vertex_index Vertex;
-  auto normals = mesh.add_property_map<Vertex, Epick::Vector_3>("v:bilateral_normal").first;
-  PMP::compute_vertex_normals(mesh, normals);
-  std::vector<Epick::Point_3> moved(mesh.number_of_vertices());
-  std::vector<std::size_t> stamp(mesh.number_of_vertices(), std::size_t(-1));
-  std::vector<Vertex> queue;
-  for(Vertex v : mesh.vertices())
-  {
-    const Epick::Point_3& p = mesh.point(v);
-    const Epick::Vector_3& n = normals[v];
-    double sum = 0, normaliser = 0;
-    queue.assign(1, v);
-    stamp[v.idx()] = v.idx();
-    for(std::size_t k = 0; k < queue.size(); ++k)
-      for(Vertex q : CGAL::vertices_around_target(mesh.halfedge(queue[k]), mesh))
-      {
-        if(stamp[q.idx()] == v.idx())
-          continue;
-        stamp[q.idx()] = v.idx();
-        const double d2 = CGAL::squared_distance(p, mesh.point(q));
-        if(d2 > 4 * sigma_c * sigma_c)
-          continue;
-        queue.push_back(q);
-        const double h = n * (mesh.point(q) - p);
-        const double w = std::exp(-d2 / (2 * sigma_c * sigma_c)) * std::exp(-h * h / (2 * sigma_s * sigma_s));
-        sum += w * h;
-        normaliser += w;
-      }
-    moved[v.idx()] = normaliser > 0 ? p + (sum / normaliser) * n : p;
-  }
-  for(Vertex v : mesh.vertices())
-    mesh.point(v) = moved[v.idx()];
-  mesh.remove_property_map(normals);
-}
-
 // The best MAD of bilateral mesh denoising over the benchmark's grid: widths sigma_c
 // of 1, 1.5, 2 and sigma_s of 0.3, 0.6, 1 mean edge lengths, 1 to 10 iterations.
 double best_bilateral(const Mesh& clean, const Mesh& noisy, std::string& best)
@@ -138,7 +98,7 @@ double best_bilateral(const Mesh& clean, const Mesh& noisy, std::string& best)
       Mesh mesh = noisy;
       for(unsigned int iterations = 1; iterations <= 10; ++iterations)
       {
-        bilateral_iteration(mesh, c * edge, s * edge);
+        test_support::bilateral_denoising_iteration(mesh, c * edge, s * edge);
         const double mad = mean_angle_deviation(clean, mesh);
         if(mad < best_mad)
         {

@@ -2,18 +2,19 @@
 // SPDX-License-Identifier: LGPL-3.0-or-later
 //
 // Shared by the test programs: checks that count failures instead of aborting (so
-// one run reports every failing property), CGAL's meshes, and seeded noise.
+// one run reports every failing property) and CGAL's meshes; with mesh_measures.h,
+// which the benchmarks share, the noise and the measures.
 
 #ifndef CGAL_HEAT_DIFFUSION_TEST_SUPPORT_H
 #define CGAL_HEAT_DIFFUSION_TEST_SUPPORT_H
 
 #include <CGAL/Polygon_mesh_processing/IO/polygon_mesh_io.h>
-#include <CGAL/Polygon_mesh_processing/compute_normal.h>
+
+#include "mesh_measures.h"
 
 #include <cmath>
 #include <cstdlib>
 #include <iostream>
-#include <random>
 #include <stdexcept>
 #include <string>
 
@@ -59,32 +60,6 @@ Mesh load(const std::string& name)
   if(!CGAL::IO::read_polygon_mesh(data_path(name), mesh) || num_faces(mesh) == 0)
     throw std::runtime_error("cannot read the test mesh " + data_path(name));
   return mesh;
-}
-
-template <typename Mesh>
-double mean_edge_length(const Mesh& mesh)
-{
-  double sum = 0;
-  for(auto e : edges(mesh))
-    sum += std::sqrt(CGAL::to_double(
-        CGAL::squared_distance(mesh.point(source(halfedge(e, mesh), mesh)), mesh.point(target(halfedge(e, mesh), mesh)))));
-  return sum / double(num_edges(mesh));
-}
-
-// Moves every vertex along its normal by Gaussian noise of standard deviation
-// `relative_sigma` times the mean edge length (seeded: the same mesh every run).
-template <typename Mesh>
-void add_normal_noise(Mesh& mesh, double relative_sigma, unsigned seed)
-{
-  typedef typename CGAL::Kernel_traits<typename Mesh::Point>::Kernel K;
-  const double sigma = relative_sigma * mean_edge_length(mesh);
-  auto normals = mesh.template add_property_map<typename Mesh::Vertex_index, typename K::Vector_3>("v:noise_normal").first;
-  CGAL::Polygon_mesh_processing::compute_vertex_normals(mesh, normals);
-  std::mt19937 generator(seed);
-  std::normal_distribution<double> gaussian(0., sigma);
-  for(auto v : mesh.vertices())
-    mesh.point(v) = mesh.point(v) + gaussian(generator) * normals[v];
-  mesh.remove_property_map(normals);
 }
 
 } // namespace test_support

@@ -1,0 +1,132 @@
+// Copyright (c) 2026 The CGAL Heat_diffusion developers.
+// SPDX-License-Identifier: LGPL-3.0-or-later
+//
+// Shared by the tests and the benchmarks, so that both measure the same way: the mean
+// edge length, seeded noise along the normals, 2-rings and the re-detection of
+// features within them, and the bilateral denoising baseline.
+
+#ifndef CGAL_HEAT_DIFFUSION_MESH_MEASURES_H
+#define CGAL_HEAT_DIFFUSION_MESH_MEASURES_H
+
+#include <CGAL/Polygon_mesh_processing/compute_normal.h>
+#include <CGAL/boost/graph/iterator.h>
+
+#include <cmath>
+#include <cstddef>
+#include <random>
+#include <set>
+#include <vector>
+
+namespace test_support {
+
+template <typename Mesh>
+double mean_edge_length(const Mesh& mesh)
+{
+  double sum = 0;
+  for(auto e : edges(mesh))
+    sum += std::sqrt(CGAL::to_double(
+        CGAL::squared_distance(mesh.point(source(halfedge(e, mesh), mesh)), mesh.point(target(halfedge(e, mesh), mesh)))));
+  return sum / double(num_edges(mesh));
+}
+
+// Moves every vertex along its normal by Gaussian noise of standard deviation
+// `relative_sigma` times the mean edge length (seeded: the same mesh every run).
+template <typename Mesh>
+void add_normal_noise(Mesh& mesh, double relative_sigma, unsigned seed)
+{
+  typedef typename CGAL::Kernel_traits<typename Mesh::Point>::Kernel K;
+  const double sigma = relative_sigma * mean_edge_length(mesh);
+  auto normals = mesh.template add_property_map<typename Mesh::Vertex_index, typename K::Vector_3>("v:noise_normal").first;
+  CGAL::Polygon_mesh_processing::compute_vertex_normals(mesh, normals);
+  std::mt19937 generator(seed);
+  std::normal_distribution<double> gaussian(0., sigma);
+  for(auto v : mesh.vertices())
+    mesh.point(v) = mesh.point(v) + gaussian(generator) * normals[v];
+  mesh.remove_property_map(normals);
+}
+
+// The 2-ring of every vertex of a Surface_mesh, by index, without the vertex itself.
+template <typename Mesh>
+std::vector<std::set<std::size_t> > two_rings(const Mesh& mesh)
+{
+  std::vector<std::set<std::size_t> > rings(mesh.number_of_vertices());
+  for(auto v : mesh.vertices())
+    for(auto u : vertices_around_target(v, mesh))
+    {
+      rings[v.idx()].insert(u.idx());
+      for(auto w : vertices_around_target(u, mesh))
+        if(w != v)
+          rings[v.idx()].insert(w.idx());
+    }
+  return rings;
+}
+
+// How many vertices of `wanted` have a vertex of `found` within their 2-ring (itself
+// included): the re-detection of features.
+template <typename Vertex>
+std::size_t count_found_nearby(const std::vector<Vertex>& wanted, const std::vector<Vertex>& found,
+                               const std::vector<std::set<std::size_t> >& rings)
+{
+  std::set<std::size_t> found_indices;
+  for(Vertex v : found)
+    found_indices.insert(v.idx());
+  std::size_t hits = 0;
+  for(Vertex v : wanted)
+  {
+    bool hit = found_indices.count(v.idx()) != 0;
+    for(std::size_t u : rings[v.idx()])
+      hit = hit || found_indices.count(u) != 0;
+    hits += hit ? 1 : 0;
+  }
+  return hits;
+}
+
+// One iteration of bilateral mesh denoising (Fleishman, Drori, Cohen-Or, SIGGRAPH
+// 2003), the baseline of the denoising test and benchmark: each vertex moves along its
+// normal n by the bilaterally weighted mean of the heights h = n . (q - v) of the
+// vertices q within distance 2 sigma_c (reached over edges), with weights
+// exp(-|q - v|^2 / 2 sigma_c^2) exp(-h^2 / 2 sigma_s^2).
+template <typename Mesh>
+void bilateral_denoising_iteration(Mesh& mesh, double sigma_c, double sigma_s)
+{
+  typedef typename Mesh::Vertex_index Vertex;
+  typedef typename Mesh::Point Point;
+  typedef typename CGAL::Kernel_traits<Point>::Kernel::Vector_3 Vector;
+  auto normals = mesh.template add_property_map<Vertex, Vector>("v:bilateral_normal").first;
+  CGAL::Polygon_mesh_processing::compute_vertex_normals(mesh, normals);
+  std::vector<Point> moved(mesh.number_of_vertices());
+  std::vector<std::size_t> stamp(mesh.number_of_vertices(), std::size_t(-1));
+  std::vector<Vertex> queue;
+  const double radius2 = 4 * sigma_c * sigma_c;
+  for(Vertex v : mesh.vertices())
+  {
+    const Point& p = mesh.point(v);
+    const Vector& n = normals[v];
+    double sum = 0, normaliser = 0;
+    queue.assign(1, v);
+    stamp[v.idx()] = v.idx();
+    for(std::size_t k = 0; k < queue.size(); ++k)
+      for(Vertex q : CGAL::vertices_around_target(mesh.halfedge(queue[k]), mesh))
+      {
+        if(stamp[q.idx()] == v.idx())
+          continue;
+        stamp[q.idx()] = v.idx();
+        const double d2 = CGAL::to_double(CGAL::squared_distance(p, mesh.point(q)));
+        if(d2 > radius2)
+          continue;
+        queue.push_back(q);
+        const double h = CGAL::to_double(n * (mesh.point(q) - p));
+        const double w = std::exp(-d2 / (2 * sigma_c * sigma_c)) * std::exp(-h * h / (2 * sigma_s * sigma_s));
+        sum += w * h;
+        normaliser += w;
+      }
+    moved[v.idx()] = normaliser > 0 ? p + (sum / normaliser) * n : p;
+  }
+  for(Vertex v : mesh.vertices())
+    mesh.point(v) = moved[v.idx()];
+  mesh.remove_property_map(normals);
+}
+
+} // namespace test_support
+
+#endif // CGAL_HEAT_DIFFUSION_MESH_MEASURES_H
