@@ -16,6 +16,7 @@
 
 #include <algorithm>
 #include <map>
+#include <memory>
 
 #ifdef CGAL_LINKED_WITH_TBB
 #include <tbb/task_arena.h>
@@ -54,6 +55,15 @@ void test_hilbert_numbering()
     ns_largest = (std::max)(ns_largest, std::abs(given.normal_signature(v)));
   }
   CHECK(moved > n / 2);
+#ifdef CGAL_LINKED_WITH_TBB
+  // the numbering (a parallel Hilbert sort) does not depend on the number of threads
+  std::unique_ptr<NCC> one_thread;
+  tbb::task_arena(1).execute([&] { one_thread = std::make_unique<NCC>(mesh); });
+  std::size_t renumbered_differently = 0;
+  for(Vertex v : mesh.vertices())
+    renumbered_differently += one_thread->vertex_index(v) != renumbered.vertex_index(v) ? 1 : 0;
+  CHECK_MESSAGE(renumbered_differently == 0, renumbered_differently << " vertices numbered differently on one thread");
+#endif
   CHECK_MESSAGE(ns_difference <= 1e-12 * ns_largest, "NS differ by " << ns_difference << " (largest " << ns_largest << ")");
   for(auto e : mesh.edges())
   {

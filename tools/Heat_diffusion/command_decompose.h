@@ -52,7 +52,7 @@ inline Diffusion_spec decompose_spec()
 inline std::string decompose_help()
 {
   return "Usage: heat_diffusion decompose MESH [--levels L] [-k S] [--sigma S] [--time T]\n"
-         "                                [--kernel spectral|local] [-m M] [--coarse N] [--field ns|FILE]\n"
+         "                                [--kernel K] [-m M] [--coarse N] [--field ns|FILE]\n"
          "                                [--scale-invariant] [-o PREFIX] [--json] [--quiet]\n"
          "\n"
          "Hierarchical decomposition of a field (the paper's eq. 24): S = D^1 + ... + D^L + S^L with\n"

@@ -28,7 +28,7 @@ inline Diffusion_spec diffuse_spec()
 
 inline std::string diffuse_help()
 {
-  return "Usage: heat_diffusion diffuse MESH [--sigma S] [--time T] [--kernel spectral|local] [-m M]\n"
+  return "Usage: heat_diffusion diffuse MESH [--sigma S] [--time T] [--kernel K] [-m M]\n"
          "                              [--coarse N] [-k K1,K2,...] [--field ns|FILE] [--scale-invariant]\n"
          "                              [-o PREFIX] [--json] [--no-baseline] [--quiet]\n"
          "\n"

@@ -66,7 +66,7 @@ inline Diffusion_spec enhance_spec() { return level_spec(); }
 inline std::string enhance_help()
 {
   return "Usage: heat_diffusion enhance MESH [--weights W1,W2,...] [-k S] [--sigma S] [--time T]\n"
-         "                              [--kernel spectral|local] [-m M] [--coarse N] [--scale-invariant]\n"
+         "                              [--kernel K] [-m M] [--coarse N] [--scale-invariant]\n"
          "                              [--anchor-weight A] [-o OUT] [--json] [--quiet]\n"
          "\n"
          "Shape editing (the paper's Fig. 10): the Normal Signature is decomposed into L detail\n"

@@ -45,7 +45,7 @@ inline Diffusion_spec features_spec()
 
 inline std::string features_help()
 {
-  return "Usage: heat_diffusion features MESH [--sigma S] [--time T] [--kernel spectral|local] [-m M]\n"
+  return "Usage: heat_diffusion features MESH [--sigma S] [--time T] [--kernel K] [-m M]\n"
          "                               [--coarse N] [-k K1,K2,...] [--c C] [--field ns|FILE]\n"
          "                               [--scale-invariant] [-o PREFIX] [--json] [--quiet]\n"
          "\n"

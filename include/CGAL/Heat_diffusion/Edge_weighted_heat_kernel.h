@@ -38,6 +38,11 @@ struct Heat_kernel_timings
   double rayleigh_ritz = 0;                 ///< coarse level: prolongation of the vectors and Rayleigh-Ritz
 };
 
+/// \cond SKIP_IN_MANUAL
+template <typename TriangleMesh, typename GeomTraits>
+class Anisotropic_heat_diffusion;
+/// \endcond
+
 /// \ingroup PkgHeatDiffusionKernel
 /// The edge-weighted heat kernel of a triangle mesh (paper, eq. 10-14 and 20),
 /// computed once from the m smallest generalized eigenpairs and evaluated many times.
@@ -298,21 +303,23 @@ public:
     return eigenvectors_ * coefficients;
   }
 
-  /// \cond SKIP_IN_MANUAL
+private:
+  // Anisotropic_heat_diffusion evaluates the kernel from the coarse factors below.
+  template <typename, typename>
+  friend class Anisotropic_heat_diffusion;
+
   // With a coarse level, eigenvectors() = coarse_prolongation() * coarse_eigenvectors()
-  // (fine x coarse, three entries a row, times coarse x m): Anisotropic_heat_diffusion
-  // evaluates the kernel from these factors. Empty without a coarse level.
+  // (fine x coarse, three entries a row, times coarse x m). Empty without a coarse level.
   const Eigen::SparseMatrix<double, Eigen::RowMajor>& coarse_prolongation() const { return coarse_prolongation_; }
   const Eigen::MatrixXd& coarse_eigenvectors() const { return coarse_eigenvectors_; }
 
+  // The factor beta_ij of eq. 14.
   double beta(std::size_t i, std::size_t j) const
   {
     return 0.5 * (operators_.mass.coeff(Eigen::Index(i), Eigen::Index(i)) +
                   operators_.mass.coeff(Eigen::Index(j), Eigen::Index(j)));
   }
-  /// \endcond
 
-private:
   // Seconds since the last lap.
   double lap()
   {

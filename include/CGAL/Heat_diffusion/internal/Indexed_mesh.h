@@ -105,7 +105,12 @@ bool number_along_hilbert_curve(const TriangleMesh& tm, VertexPointMap vpm, Vert
   for(std::size_t k = 0; k < order.size(); ++k)
     order[k] = k;
   typedef CGAL::Spatial_sort_traits_adapter_3<K, typename CGAL::Pointer_property_map<K::Point_3>::type> Traits;
+  // The parallel sort splits at the same medians as the sequential one: the same order.
+#ifdef CGAL_LINKED_WITH_TBB
+  CGAL::hilbert_sort<CGAL::Parallel_tag>(order.begin(), order.end(), Traits(CGAL::make_property_map(points)));
+#else
   CGAL::hilbert_sort(order.begin(), order.end(), Traits(CGAL::make_property_map(points)));
+#endif
   for(std::size_t k = 0; k < order.size(); ++k)
     put(index, vertex_list[order[k]], k);
   return true;

@@ -6,11 +6,15 @@
 
 #include <CGAL/Heat_diffusion/internal/Indexed_mesh.h>
 #include <CGAL/Heat_diffusion/internal/ncc_weights.h>
+#include <CGAL/Heat_diffusion/internal/parallel_for.h>
 
 #include <Eigen/Sparse>
 
+#include <algorithm>
 #include <cmath>
 #include <limits>
+#include <stdexcept>
+#include <utility>
 #include <vector>
 
 namespace CGAL {
@@ -38,57 +42,106 @@ inline double ncc_edge_weight(const Ncc_data& data, std::size_t i, std::size_t j
   return std::exp(-(di - dj).squaredNorm() / (sigma * sigma));
 }
 
+// The area of the triangle (a, b, c), computed from its vertices in increasing index
+// order, so that every vertex of the triangle gets the same bits: B stays exactly
+// symmetric although each column is assembled from its own vertex's fan.
+inline double canonical_triangle_area(const Indexed_mesh& mesh, std::size_t a, std::size_t b, std::size_t c)
+{
+  if(a > b)
+    std::swap(a, b);
+  if(b > c)
+    std::swap(b, c);
+  if(a > b)
+    std::swap(a, b);
+  return 0.5 * (mesh.points[b] - mesh.points[a]).cross(mesh.points[c] - mesh.points[a]).norm();
+}
+
 // `target_area`: the total area after rescaling; by default the number of vertices.
 // The coarse level uses the fine mesh's vertex count, so that t keeps its meaning.
+//
+// Both matrices have the pattern of the mesh's edges plus the diagonal: column i lists
+// the fan of v_i. They are written directly in compressed columns, each column by one
+// thread from its fan (parallel, and the same bits on any number of threads), without
+// the triplets and their sort (30 million of them at 1.6M vertices).
 inline Heat_operators assemble_heat_operators(const Indexed_mesh& mesh, const Ncc_data& data, double sigma,
                                               double target_area = 0.)
 {
+  typedef Eigen::SparseMatrix<double>::StorageIndex Storage_index;
   const std::size_t n = mesh.number_of_vertices();
   Heat_operators ops;
 
   double total_area = 0;
-  std::vector<double> face_areas(mesh.triangles.size());
-  for(std::size_t f = 0; f < mesh.triangles.size(); ++f)
-  {
-    const auto& t = mesh.triangles[f];
-    face_areas[f] = 0.5 * (mesh.points[t[1]] - mesh.points[t[0]]).cross(mesh.points[t[2]] - mesh.points[t[0]]).norm();
-    total_area += face_areas[f];
-  }
+  for(const auto& t : mesh.triangles)
+    total_area += canonical_triangle_area(mesh, t[0], t[1], t[2]);
   ops.area_scale = (target_area > 0 ? target_area : double(n)) / total_area;
 
-  // B (eq. 11): B_ij = (|t_r| + |t_s|) / 12 over the faces sharing edge ij, and
-  // B_ii = (sum of incident face areas) / 6; assembled face by face.
-  std::vector<Eigen::Triplet<double> > mass_entries;
-  mass_entries.reserve(9 * mesh.triangles.size());
-  for(std::size_t f = 0; f < mesh.triangles.size(); ++f)
-  {
-    const auto& t = mesh.triangles[f];
-    const double a = face_areas[f] * ops.area_scale;
-    for(int r = 0; r < 3; ++r)
-      for(int c = 0; c < 3; ++c)
-        mass_entries.emplace_back(int(t[r]), int(t[c]), r == c ? a / 6. : a / 12.);
-  }
-  ops.mass.resize(Eigen::Index(n), Eigen::Index(n));
-  ops.mass.setFromTriplets(mass_entries.begin(), mass_entries.end());
-
-  // L = D - W over the mesh edges. Each edge is seen from both ends through the fans,
-  // and contributes once to each off-diagonal entry.
-  std::vector<Eigen::Triplet<double> > stiffness_entries;
-  stiffness_entries.reserve(mesh.fan.size() + n);
+  // The rows of column i: its neighbours, sorted and without repetition (two edges
+  // between the same vertices add up, as they would in a sum of triplets), and i.
+  std::vector<std::size_t> rows(mesh.fan);
+  std::vector<Storage_index> column_begin(n + 1, 0);
+  parallel_for(n, [&](std::size_t i) {
+    const auto first = rows.begin() + std::ptrdiff_t(mesh.fan_begin[i]);
+    const auto last = rows.begin() + std::ptrdiff_t(mesh.fan_begin[i + 1]);
+    std::sort(first, last);
+    column_begin[i + 1] = Storage_index(std::unique(first, last) - first + 1);
+  });
   for(std::size_t i = 0; i < n; ++i)
+    column_begin[i + 1] += column_begin[i];
+  const std::size_t entries = std::size_t(column_begin[n]);
+  if(entries > std::size_t((std::numeric_limits<Storage_index>::max)()))
+    throw std::length_error("CGAL::Heat_diffusion: the mesh has too many edges for the sparse matrices' index type");
+  for(Eigen::SparseMatrix<double>* matrix : {&ops.stiffness, &ops.mass})
   {
-    double diagonal = 0;
-    for(std::size_t k = mesh.fan_begin[i]; k < mesh.fan_begin[i + 1]; ++k)
-    {
-      const std::size_t j = mesh.fan[k];
-      const double w = ncc_edge_weight(data, i, j, sigma);
-      stiffness_entries.emplace_back(int(i), int(j), -w);
-      diagonal += w;
-    }
-    stiffness_entries.emplace_back(int(i), int(i), diagonal);
+    matrix->resize(Eigen::Index(n), Eigen::Index(n));
+    matrix->resizeNonZeros(Eigen::Index(entries));
+    std::copy(column_begin.begin(), column_begin.end(), matrix->outerIndexPtr());
   }
-  ops.stiffness.resize(Eigen::Index(n), Eigen::Index(n));
-  ops.stiffness.setFromTriplets(stiffness_entries.begin(), stiffness_entries.end());
+  const double scale = ops.area_scale;
+  parallel_for(n, [&](std::size_t i) {
+    const std::size_t begin = std::size_t(column_begin[i]), size = std::size_t(column_begin[i + 1]) - begin;
+    Storage_index* row = ops.stiffness.innerIndexPtr() + begin;
+    double* stiffness = ops.stiffness.valuePtr() + begin;
+    double* mass = ops.mass.valuePtr() + begin;
+    // the sorted neighbours with i inserted in place
+    const std::size_t* neighbours = rows.data() + mesh.fan_begin[i];
+    bool placed = false;
+    for(std::size_t r = 0, a = 0; r < size; ++r)
+    {
+      if(!placed && (a == size - 1 || neighbours[a] > i))
+      {
+        row[r] = Storage_index(i);
+        placed = true;
+      }
+      else
+        row[r] = Storage_index(neighbours[a++]);
+    }
+    std::fill(stiffness, stiffness + size, 0.);
+    std::fill(mass, mass + size, 0.);
+    const auto position = [&](std::size_t j) {
+      return std::size_t(std::lower_bound(row, row + size, Storage_index(j)) - row);
+    };
+    const std::size_t self = position(i);
+    // L = D - W (eq. 10, NOTES 5), and B (eq. 11): B_ij = (|t_r| + |t_s|) / 12 over the
+    // faces sharing edge ij, B_ii = (sum of the incident face areas) / 6.
+    const std::size_t fan_begin = mesh.fan_begin[i], degree = mesh.fan_begin[i + 1] - fan_begin;
+    for(std::size_t f = 0; f < degree; ++f)
+    {
+      const std::size_t j = mesh.fan[fan_begin + f];
+      const double w = ncc_edge_weight(data, i, j, sigma);
+      stiffness[position(j)] -= w;
+      stiffness[self] += w;
+      // the triangle (u_f, i, u_f+1), the last one only in a closed fan
+      if(f + 1 < degree || (mesh.fan_is_closed[i] && degree > 1))
+      {
+        const std::size_t next = mesh.fan[fan_begin + (f + 1) % degree];
+        const double area = scale * canonical_triangle_area(mesh, j, i, next);
+        mass[self] += area / 6.;
+        mass[position(j)] += area / 12.;
+        mass[position(next)] += area / 12.;
+      }
+    }
+  });
+  std::copy(ops.stiffness.innerIndexPtr(), ops.stiffness.innerIndexPtr() + entries, ops.mass.innerIndexPtr());
   return ops;
 }
 
