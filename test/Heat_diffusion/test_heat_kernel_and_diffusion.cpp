@@ -46,6 +46,16 @@ void check_eigenpairs(const Kernel& kernel, const std::string& name, bool connec
   const Eigen::VectorXd& lambda = kernel.eigenvalues();
   const auto& L = kernel.stiffness_matrix();
   const auto& B = kernel.mass_matrix();
+  // L and B (assembled column by column from the fans): exactly symmetric, the same
+  // pattern, L's rows summing to zero, B's entries to the rescaled area n
+  const Eigen::SparseMatrix<double> L_transposed = L.transpose(), B_transposed = B.transpose();
+  CHECK_MESSAGE((L_transposed - L).norm() == 0. && (B_transposed - B).norm() == 0., name << ": L or B not symmetric");
+  CHECK(L.nonZeros() == B.nonZeros());
+  const Eigen::VectorXd ones = Eigen::VectorXd::Ones(L.rows());
+  CHECK_MESSAGE((L * ones).cwiseAbs().maxCoeff() <= 1e-12 * L.diagonal().cwiseAbs().maxCoeff(),
+                name << ": a row of L does not sum to zero");
+  CHECK_MESSAGE(std::abs(B.sum() - double(B.rows())) <= 1e-9 * double(B.rows()),
+                name << ": B sums to " << B.sum() << ", not the number of vertices");
   double residual = 0;
   for(Eigen::Index k = 0; k < lambda.size(); ++k)
     residual = (std::max)(residual, (L * phi.col(k) - lambda[k] * (B * phi.col(k))).norm() / phi.col(k).norm());

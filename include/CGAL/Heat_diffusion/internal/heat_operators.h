@@ -78,27 +78,28 @@ inline Heat_operators assemble_heat_operators(const Indexed_mesh& mesh, const Nc
   // The rows of column i: its neighbours, sorted and without repetition (two edges
   // between the same vertices add up, as they would in a sum of triplets), and i.
   std::vector<std::size_t> rows(mesh.fan);
-  std::vector<Storage_index> column_begin(n + 1, 0);
+  std::vector<std::size_t> column_begin(n + 1, 0);
   parallel_for(n, [&](std::size_t i) {
     const auto first = rows.begin() + std::ptrdiff_t(mesh.fan_begin[i]);
     const auto last = rows.begin() + std::ptrdiff_t(mesh.fan_begin[i + 1]);
     std::sort(first, last);
-    column_begin[i + 1] = Storage_index(std::unique(first, last) - first + 1);
+    column_begin[i + 1] = std::size_t(std::unique(first, last) - first) + 1;
   });
   for(std::size_t i = 0; i < n; ++i)
     column_begin[i + 1] += column_begin[i];
-  const std::size_t entries = std::size_t(column_begin[n]);
+  const std::size_t entries = column_begin[n];
   if(entries > std::size_t((std::numeric_limits<Storage_index>::max)()))
     throw std::length_error("CGAL::Heat_diffusion: the mesh has too many edges for the sparse matrices' index type");
   for(Eigen::SparseMatrix<double>* matrix : {&ops.stiffness, &ops.mass})
   {
     matrix->resize(Eigen::Index(n), Eigen::Index(n));
     matrix->resizeNonZeros(Eigen::Index(entries));
-    std::copy(column_begin.begin(), column_begin.end(), matrix->outerIndexPtr());
+    for(std::size_t i = 0; i <= n; ++i)
+      matrix->outerIndexPtr()[i] = Storage_index(column_begin[i]);
   }
   const double scale = ops.area_scale;
   parallel_for(n, [&](std::size_t i) {
-    const std::size_t begin = std::size_t(column_begin[i]), size = std::size_t(column_begin[i + 1]) - begin;
+    const std::size_t begin = column_begin[i], size = column_begin[i + 1] - begin;
     Storage_index* row = ops.stiffness.innerIndexPtr() + begin;
     double* stiffness = ops.stiffness.valuePtr() + begin;
     double* mass = ops.mass.valuePtr() + begin;
