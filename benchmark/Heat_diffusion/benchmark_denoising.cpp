@@ -5,11 +5,13 @@
 // Gaussian noise along the normals of 0.1, 0.2, 0.3 and 0.5 mean edge length:
 //  - CGAL's Polygon_mesh_processing::smooth_shape (mean curvature flow), best of a
 //    grid of time steps and iteration counts;
-//  - bilateral mesh denoising (Fleishman, Drori and Cohen-Or 2003), written here,
-//    best of a grid of its two widths and iteration counts.
+//  - bilateral mesh denoising (Fleishman, Drori and Cohen-Or 2003), in
+//    test/Heat_diffusion/mesh_measures.h (test_denoising uses the same), best of a grid
+//    of its two widths and iteration counts.
 // denoise_mesh() is run with its defaults (normal filtering) and as the best of a
 // small grid too; the paper's pipeline (Denoising_method::signature_diffusion) with
-// its defaults, with the spectral kernel and with the local one, and its reconstruction with the clean mesh's own Normal Signature and
+// its defaults, with the spectral kernel and with the local one (the default kernel), and its
+// reconstruction with the clean mesh's own Normal Signature and
 // normals as targets ("NS oracle"): the same reconstruction fed with perfect targets,
 // which separates what the diffusion of the signature costs from what the
 // reconstruction costs.
@@ -235,8 +237,8 @@ int main(int argc, char** argv)
       files.push_back(std::string(CGAL_HEAT_DIFFUSION_DATA_DIR) + "/" + name);
 
   std::cout << "| mesh | noise | noisy MAD / RMS | denoise_mesh (defaults) | denoise_mesh (best of grid) "
-               "| smooth_shape (best of grid) | bilateral (best of grid) | signature diffusion (defaults) "
-               "| signature diffusion, local kernel | NS oracle |\n"
+               "| smooth_shape (best of grid) | bilateral (best of grid) | signature diffusion, spectral kernel "
+               "| signature diffusion, local kernel (its default) | NS oracle |\n"
             << "|---|---|---|---|---|---|---|---|---|---|\n";
   for(const std::string& file : files)
   {
