@@ -112,8 +112,6 @@ void check_rational_approximation_and_clusters()
   CHECK_MESSAGE(largest <= 32, "cluster of " << largest << " vertices");
   std::cout << "fandisk: " << begin.size() - 1 << " clusters of at most 32 vertices, mean "
             << double(order.size()) / double(begin.size() - 1) << std::endl;
-  CHECK(HD::internal::breadth_first_order(indexed) ==
-        HD::internal::clustered_order(indexed, HD::internal::default_local_cluster_size));
 }
 
 // The heat region of v_j (NOTES 8): grown breadth first from v_j through the vertices

@@ -23,6 +23,7 @@
 #include <limits>
 #include <memory>
 #include <mutex>
+#include <numeric>
 #include <sstream>
 #include <stdexcept>
 #include <vector>
@@ -392,6 +393,7 @@ private:
   struct Local_columns
   {
     typedef internal::Local_heat_kernel::Workspace Workspace;
+    static constexpr bool relative = false;  // the absolute threshold
     const internal::Local_heat_kernel& kernel;
 
     Workspace make_workspace() const { return kernel.make_workspace(); }
@@ -405,23 +407,19 @@ private:
   void build_spectral(double t, const internal::Progress& progress)
   {
     time_ = t;
-    const Eigen::Index m = Eigen::Index(kernel_->number_of_eigenpairs());
     std::vector<std::size_t> order(number_of_vertices());
-    for(std::size_t j = 0; j < order.size(); ++j)
-      order[j] = j;
-    if(kernel_->coarse_eigenvectors().size() > 0)
-    {
-      Coarse_spectral_columns columns{kernel_->coarse_eigenvectors(), &kernel_->coarse_prolongation(), kernel_,
-                                      kernel_->is_scale_invariant()};
-      for(Eigen::Index k = 0; k < m; ++k)
+    std::iota(order.begin(), order.end(), std::size_t(0));
+    // psi = (eigenvectors, fine or coarse) exp(-rate t / 2), column by column
+    auto build = [&](auto columns) {
+      for(Eigen::Index k = 0; k < columns.psi.cols(); ++k)
         columns.psi.col(k) *= std::exp(-0.5 * kernel_->decay_rate(std::size_t(k)) * t);
-      build_from_columns(columns, columns.relative, order, progress);
-      return;
-    }
-    Spectral_columns columns{kernel_->eigenvectors(), kernel_, kernel_->is_scale_invariant()};
-    for(Eigen::Index k = 0; k < m; ++k)
-      columns.psi.col(k) *= std::exp(-0.5 * kernel_->decay_rate(std::size_t(k)) * t);
-    build_from_columns(columns, columns.relative, order, progress);
+      build_from_columns(columns, order, progress);
+    };
+    if(kernel_->coarse_eigenvectors().size() > 0)
+      build(Coarse_spectral_columns{kernel_->coarse_eigenvectors(), &kernel_->coarse_prolongation(), kernel_,
+                                    kernel_->is_scale_invariant()});
+    else
+      build(Spectral_columns{kernel_->eigenvectors(), kernel_, kernel_->is_scale_invariant()});
   }
 
   void build_local(double t, const internal::Heat_operators& operators, const internal::Progress& progress)
@@ -430,7 +428,7 @@ private:
     const internal::Local_heat_kernel kernel(ncc_->indexed_mesh(), operators.stiffness, operators.mass, t);
     // Sources in breadth-first order: consecutive sources share most of their patches,
     // which then stay in cache.
-    build_from_columns(Local_columns{kernel}, false, internal::breadth_first_order(ncc_->indexed_mesh()), progress);
+    build_from_columns(Local_columns{kernel}, kernel.source_order(), progress);
   }
 
   // Grows the heat region of every source j and fills column j of A_t. `columns`
@@ -438,7 +436,7 @@ private:
   // (results do not depend on it: each source writes its own column).
   // `progress` is told after each block of sources.
   template <typename Columns>
-  void build_from_columns(const Columns& kernel, bool relative, const std::vector<std::size_t>& order,
+  void build_from_columns(const Columns& kernel, const std::vector<std::size_t>& order,
                           const internal::Progress& progress)
   {
     const internal::Indexed_mesh& mesh = ncc_->indexed_mesh();
@@ -483,7 +481,7 @@ private:
             auto h = [&](std::size_t i) { return kernel(j, i, s.kernel_workspace); };
             ++s.generation;
             const double peak = h(j);
-            const double tau = relative ? threshold() * peak : threshold();
+            const double tau = kernel.relative ? threshold() * peak : threshold();
             auto& column = columns[position];
             column.clear();
             column.emplace_back(j, peak);
@@ -577,7 +575,6 @@ private:
         row_major_.valuePtr()[position] = chunk_values[p.chunk][k];
       }
     }
-    column_major_ = std::make_shared<Column_major_copy>();
   }
 
   // operator_matrix(), made from the rows on the first call (thread-safe), shared by copies.

@@ -513,6 +513,7 @@ void denoise_mesh(TriangleMesh& tm, const NamedParameters& np = parameters::defa
       centroid_distance /= double(adjacency.edge_adjacent_faces.size());
     const double normal_sigma = automatic_normal_sigma ? (std::max)(0.4, 1.6 * noise / edge_length) : user_normal_sigma;
 
+    const internal::Progress reporter(progress);
     for(std::size_t iteration = 0; iteration < std::size_t(iterations); ++iteration)
     {
       internal::face_geometry(mesh, points, face_normals, areas, centroids);
@@ -524,8 +525,7 @@ void denoise_mesh(TriangleMesh& tm, const NamedParameters& np = parameters::defa
         squares += (points[i] - mesh.points[i]).squaredNorm();
       if(std::sqrt(squares / double(n)) >= displacement_limit * noise)
         break;
-      if(progress && !progress(double(iteration + 1) / iterations))
-        throw std::runtime_error("CGAL::Heat_diffusion: denoise_mesh: cancelled by the progress callback");
+      reporter.report(double(iteration + 1) / iterations, "denoise_mesh");
     }
     for(vertex_descriptor v : vertices(tm))
     {

@@ -9,6 +9,7 @@
 #include <CGAL/boost/graph/helpers.h>
 #include <CGAL/boost/graph/iterator.h>
 #include <CGAL/hilbert_sort.h>
+#include <CGAL/tags.h>
 #include <CGAL/number_utils.h>
 #include <CGAL/property_map.h>
 
@@ -23,6 +24,7 @@
 #include <sstream>
 #include <stdexcept>
 #include <string>
+#include <numeric>
 #include <vector>
 
 namespace CGAL {
@@ -102,15 +104,11 @@ bool number_along_hilbert_curve(const TriangleMesh& tm, VertexPointMap vpm, Vert
     points.emplace_back(x, y, z);
   }
   std::vector<std::size_t> order(points.size());
-  for(std::size_t k = 0; k < order.size(); ++k)
-    order[k] = k;
+  std::iota(order.begin(), order.end(), std::size_t(0));
   typedef CGAL::Spatial_sort_traits_adapter_3<K, typename CGAL::Pointer_property_map<K::Point_3>::type> Traits;
   // The parallel sort splits at the same medians as the sequential one: the same order.
-#ifdef CGAL_LINKED_WITH_TBB
-  CGAL::hilbert_sort<CGAL::Parallel_tag>(order.begin(), order.end(), Traits(CGAL::make_property_map(points)));
-#else
-  CGAL::hilbert_sort(order.begin(), order.end(), Traits(CGAL::make_property_map(points)));
-#endif
+  CGAL::hilbert_sort<CGAL::Parallel_if_available_tag>(order.begin(), order.end(),
+                                                      Traits(CGAL::make_property_map(points)));
   for(std::size_t k = 0; k < order.size(); ++k)
     put(index, vertex_list[order[k]], k);
   return true;

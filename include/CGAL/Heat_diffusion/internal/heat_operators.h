@@ -105,26 +105,18 @@ inline Heat_operators assemble_heat_operators(const Indexed_mesh& mesh, const Nc
     double* mass = ops.mass.valuePtr() + begin;
     // the sorted neighbours with i inserted in place
     const std::size_t* neighbours = rows.data() + mesh.fan_begin[i];
-    bool placed = false;
-    for(std::size_t r = 0, a = 0; r < size; ++r)
-    {
-      if(!placed && (a == size - 1 || neighbours[a] > i))
-      {
-        row[r] = Storage_index(i);
-        placed = true;
-      }
-      else
-        row[r] = Storage_index(neighbours[a++]);
-    }
+    const std::size_t self = std::size_t(std::lower_bound(neighbours, neighbours + size - 1, i) - neighbours);
+    std::copy(neighbours, neighbours + self, row);
+    row[self] = Storage_index(i);
+    std::copy(neighbours + self, neighbours + size - 1, row + self + 1);
     std::fill(stiffness, stiffness + size, 0.);
     std::fill(mass, mass + size, 0.);
     const auto position = [&](std::size_t j) {
       return std::size_t(std::lower_bound(row, row + size, Storage_index(j)) - row);
     };
-    const std::size_t self = position(i);
     // L = D - W (eq. 10, NOTES 5), and B (eq. 11): B_ij = (|t_r| + |t_s|) / 12 over the
     // faces sharing edge ij, B_ii = (sum of the incident face areas) / 6.
-    const std::size_t fan_begin = mesh.fan_begin[i], degree = mesh.fan_begin[i + 1] - fan_begin;
+    const std::size_t fan_begin = mesh.fan_begin[i], degree = mesh.degree(i);
     for(std::size_t f = 0; f < degree; ++f)
     {
       const std::size_t j = mesh.fan[fan_begin + f];

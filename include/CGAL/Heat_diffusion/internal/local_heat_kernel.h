@@ -125,14 +125,8 @@ inline std::vector<std::size_t> clustered_order(const Indexed_mesh& mesh, std::s
   return order;
 }
 
-// Sources in the order the local kernel works best: its clusters one after the other,
-// so that consecutive sources share their patch factorisations.
+// The number of sources whose columns share one patch and its factorisations.
 constexpr std::size_t default_local_cluster_size = 32;
-
-inline std::vector<std::size_t> breadth_first_order(const Indexed_mesh& mesh)
-{
-  return clustered_order(mesh, default_local_cluster_size);
-}
 
 // Which mass matrix the local kernel uses. `consistent` is the FEM mass matrix B of
 // eq. 11, the operator of the spectral kernel; `lumped` replaces it by its row sums
@@ -167,7 +161,7 @@ enum class Local_kernel_mass { consistent, lumped };
 // whole cluster: one ordering, one symbolic analysis and three numeric factorisations
 // per cluster, and the cluster's columns solved together as a block (contiguous rows,
 // vectorised). A workspace keeps the last cluster's columns, so the sources should
-// come cluster after cluster (breadth_first_order()). A column depends only on its
+// come cluster after cluster (source_order()). A column depends only on its
 // cluster, never on the order of the calls or on the thread: sequential and parallel
 // runs give identical results.
 //
@@ -270,6 +264,9 @@ public:
   }
 
   double time() const { return time_; }
+  // The sources in the order the kernel works best: its clusters one after the other,
+  // so that consecutive sources share their patch factorisations.
+  const std::vector<std::size_t>& source_order() const { return cluster_order_; }
   double tolerance() const { return tolerance_; }
 
   Workspace make_workspace() const

@@ -36,12 +36,10 @@ public:
     return p;
   }
 
-  explicit operator bool() const { return bool(callback_); }
-
   // Reports the fraction done of this stage; throws if the callback cancels.
   void report(double fraction, const char* stage) const
   {
-    if(callback_ && !callback_(begin_ + fraction * (end_ - begin_)))
+    if(callback_ && !callback_(overall(fraction)))
       throw std::runtime_error(std::string("CGAL::Heat_diffusion: ") + stage + " cancelled by the progress callback");
   }
 
@@ -52,10 +50,13 @@ public:
     if(!callback_)
       return {};
     const Progress self = *this;
-    return [self](double fraction) { return self.callback_(self.begin_ + fraction * (self.end_ - self.begin_)); };
+    return [self](double fraction) { return self.callback_(self.overall(fraction)); };
   }
 
 private:
+  // A fraction of this stage as a fraction of the whole.
+  double overall(double fraction) const { return begin_ + fraction * (end_ - begin_); }
+
   std::function<bool(double)> callback_;
   double begin_ = 0., end_ = 1.;
 };
