@@ -75,7 +75,7 @@ Eigen::VectorXd local_column(const HD::internal::Local_heat_kernel& kernel, std:
   kernel.compute_column(j, workspace);
   Eigen::VectorXd column = Eigen::VectorXd::Zero(Eigen::Index(n));
   for(std::size_t a = 0; a < workspace.patch.size(); ++a)
-    column[Eigen::Index(workspace.patch[a])] = workspace.values[a];
+    column[Eigen::Index(workspace.patch[a])] = HD::internal::Local_heat_kernel::value(workspace, workspace.patch[a]);
   return column;
 }
 

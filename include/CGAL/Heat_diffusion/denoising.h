@@ -214,12 +214,13 @@ inline Face_adjacency make_face_adjacency(const Indexed_mesh& mesh)
 //                                          exp(-|n_f - n_g|^2 / 2 sigma_n^2) n_g),
 // R(f) the faces sharing a vertex with f: the edge weights of eq. 10, with the
 // normals in place of the NCC, times a spatial Gaussian.
+// `next` is scratch space.
 inline void diffuse_face_normals(const Face_adjacency& adjacency, const std::vector<double>& areas,
                                  const std::vector<Eigen::Vector3d>& centroids, double sigma_c, double sigma_n,
-                                 std::vector<Eigen::Vector3d>& normals)
+                                 std::vector<Eigen::Vector3d>& normals, std::vector<Eigen::Vector3d>& next)
 {
   const std::size_t m = normals.size();
-  std::vector<Eigen::Vector3d> next(m);
+  next.resize(m);
   const double spatial = 1. / (2. * sigma_c * sigma_c), range = 1. / (2. * sigma_n * sigma_n);
   parallel_for(m, [&](std::size_t f) {
     Eigen::Vector3d sum = areas[f] * normals[f];
@@ -239,19 +240,23 @@ inline void diffuse_face_normals(const Face_adjacency& adjacency, const std::vec
 // Vertex update for given face normals (Sun et al. 2007): Jacobi steps of the fit
 // of each face's plane to its target normal,
 // v_i <- v_i + (1/|F_i|) sum_{f in F_i} n_f n_f^T (c_f - v_i).
+// `centroids` must be the face centroids of `points` on entry (they are overwritten:
+// each step needs those of its own points); `next` is scratch space.
 inline void fit_vertices_to_normals(const Indexed_mesh& mesh, const Face_adjacency& adjacency,
                                     const std::vector<Eigen::Vector3d>& face_normals, std::size_t steps,
-                                    std::vector<Eigen::Vector3d>& points)
+                                    std::vector<Eigen::Vector3d>& points, std::vector<Eigen::Vector3d>& centroids,
+                                    std::vector<Eigen::Vector3d>& next)
 {
   const std::size_t n = points.size();
-  std::vector<Eigen::Vector3d> next(n), centroids(mesh.triangles.size());
+  next.resize(n);
   for(std::size_t step = 0; step < steps; ++step)
   {
-    for(std::size_t f = 0; f < mesh.triangles.size(); ++f)
-    {
-      const auto& t = mesh.triangles[f];
-      centroids[f] = (points[t[0]] + points[t[1]] + points[t[2]]) / 3.;
-    }
+    if(step > 0)
+      for(std::size_t f = 0; f < mesh.triangles.size(); ++f)
+      {
+        const auto& t = mesh.triangles[f];
+        centroids[f] = (points[t[0]] + points[t[1]] + points[t[2]]) / 3.;
+      }
     parallel_for(n, [&](std::size_t i) {
       Eigen::Vector3d move = Eigen::Vector3d::Zero();
       const std::size_t begin = adjacency.vertex_faces_begin[i], end = adjacency.vertex_faces_begin[i + 1];
@@ -497,7 +502,7 @@ void denoise_mesh(TriangleMesh& tm, const NamedParameters& np = parameters::defa
     const double noise = internal::estimated_noise_level(mesh, ncc.data());
     const internal::Face_adjacency adjacency = internal::make_face_adjacency(mesh);
 
-    std::vector<Eigen::Vector3d> points = mesh.points, face_normals, centroids;
+    std::vector<Eigen::Vector3d> points = mesh.points, face_normals, centroids, face_scratch, vertex_scratch;
     std::vector<double> areas;
     internal::face_geometry(mesh, points, face_normals, areas, centroids);
     double centroid_distance = 0, edge_length = 0;
@@ -516,10 +521,12 @@ void denoise_mesh(TriangleMesh& tm, const NamedParameters& np = parameters::defa
     const internal::Progress reporter(progress);
     for(std::size_t iteration = 0; iteration < std::size_t(iterations); ++iteration)
     {
-      internal::face_geometry(mesh, points, face_normals, areas, centroids);
+      if(iteration > 0)  // (the geometry of the input is already there)
+        internal::face_geometry(mesh, points, face_normals, areas, centroids);
       for(std::size_t step = 0; step < std::size_t(steps); ++step)
-        internal::diffuse_face_normals(adjacency, areas, centroids, centroid_distance, normal_sigma, face_normals);
-      internal::fit_vertices_to_normals(mesh, adjacency, face_normals, 5, points);
+        internal::diffuse_face_normals(adjacency, areas, centroids, centroid_distance, normal_sigma, face_normals,
+                                       face_scratch);
+      internal::fit_vertices_to_normals(mesh, adjacency, face_normals, 5, points, centroids, vertex_scratch);
       double squares = 0;
       for(std::size_t i = 0; i < n; ++i)
         squares += (points[i] - mesh.points[i]).squaredNorm();

@@ -210,14 +210,11 @@ public:
     bool whole_component = false;
     Eigen::MatrixXd columns;        // p x c, the cluster's columns on its patch
     std::vector<double> deficits;   // |1 - 1^T B_P h| of each
+    std::size_t source_position = 0;  // the column of the last compute_column()
 
-    std::vector<double> values;     // the column on the patch
-
-    // What the last column needed (for statistics and tests): the size of its cluster,
-    // the enlargements of the cluster's patch, and the column's heat deficit.
-    std::size_t cluster_size = 0;
+    // What the last column needed (for statistics and tests): the enlargements of its
+    // cluster's patch.
     std::size_t enlargements = 0;
-    double heat_deficit = 0;
   };
 
   Local_heat_kernel(const Indexed_mesh& mesh, const Sparse_matrix& stiffness, const Sparse_matrix& mass,
@@ -238,18 +235,11 @@ public:
     const double log_tolerance = std::log(1. / tolerance);
     initial_radius_ = (std::max)(radius_factor * std::sqrt(time * log_tolerance),
                                  log_tolerance / std::log(2. + std::sqrt(3.)));
-    // the graph of L with the edge lengths of diffusion_length(), for Dijkstra
-    neighbour_begin_.assign(1, 0);
-    for(Eigen::Index i = 0; i < stiffness.outerSize(); ++i)
-    {
-      for(Sparse_matrix::InnerIterator it(stiffness, i); it; ++it)
-        if(it.row() != i)
-        {
-          neighbour_.push_back(std::uint32_t(it.row()));
-          edge_length_.push_back(diffusion_length(std::size_t(i), std::size_t(it.row())));
-        }
-      neighbour_begin_.push_back(neighbour_.size());
-    }
+    // the edge lengths of diffusion_length() along the fans (the graph of L), for Dijkstra
+    edge_length_.resize(mesh.fan.size());
+    for(std::size_t i = 0; i < n; ++i)
+      for(std::size_t q = mesh.fan_begin[i]; q < mesh.fan_begin[i + 1]; ++q)
+        edge_length_[q] = diffusion_length(i, mesh.fan[q]);
     std::vector<std::size_t> begin;
     cluster_order_ = clustered_order(mesh, (std::max)(cluster_size, std::size_t(1)), &begin);
     cluster_begin_.assign(begin.begin(), begin.end());
@@ -280,7 +270,7 @@ public:
   }
 
   // Computes h_t(i, j) for i in a patch around j. Afterwards `value(w, i)` is h_t(i, j)
-  // (0 outside the patch), and w.patch / w.values list the patch.
+  // (0 outside the patch), and w.patch lists the patch.
   void compute_column(std::size_t j, Workspace& w) const
   {
     const std::size_t c = cluster_of_[j];
@@ -304,16 +294,14 @@ public:
         ++w.enlargements;
       }
     }
-    const Eigen::Index s = Eigen::Index(position_in_cluster_[j]);
-    w.heat_deficit = w.deficits[std::size_t(s)];
-    w.values.assign(w.columns.col(s).data(), w.columns.col(s).data() + w.columns.rows());
+    w.source_position = position_in_cluster_[j];
   }
 
   static double value(const Workspace& w, std::size_t i)
   {
     if(w.stamp[i] != w.generation || w.local[i] == not_in_patch)
       return 0.;
-    return w.values[w.local[i]];
+    return w.columns(Eigen::Index(w.local[i]), Eigen::Index(w.source_position));
   }
 
 private:
@@ -338,7 +326,7 @@ private:
   }
 
   // The patch: the vertices at distance <= radius from one of the sources (Dijkstra
-  // over the edges of L), in the order they are reached. Returns true iff no vertex of
+  // over the mesh edges, the graph of L), in the order they are reached. Returns true iff no vertex of
   // their component is left outside.
   bool grow_patch(const std::size_t* sources, std::size_t count, double radius, Workspace& w) const
   {
@@ -373,9 +361,9 @@ private:
         continue;  // a stale entry
       w.local[i] = std::uint32_t(w.patch.size());
       w.patch.push_back(std::uint32_t(i));
-      for(std::size_t q = neighbour_begin_[i]; q < neighbour_begin_[i + 1]; ++q)
+      for(std::size_t q = mesh_.fan_begin[i]; q < mesh_.fan_begin[i + 1]; ++q)
       {
-        const std::size_t k = neighbour_[q];
+        const std::size_t k = mesh_.fan[q];
         if(w.stamp[k] != w.generation || w.local[k] == not_in_patch)
           reach(k, d + edge_length_[q]);
       }
@@ -687,7 +675,6 @@ private:
     const Eigen::Map<const Eigen::VectorXd> heat(w.patch_heat.data(), Eigen::Index(p));
     for(std::size_t s = 0; s < c; ++s)
       w.deficits[s] = std::abs(1. - heat.dot(w.columns.col(Eigen::Index(s))));
-    w.cluster_size = c;
   }
 
   // r(x) ~ exp(-x) of exponential_poles() must have as many poles as this class uses
@@ -702,9 +689,7 @@ private:
   Local_kernel_mass mass_kind_;
   std::vector<double> lumped_mass_;
   double initial_radius_ = 0;
-  std::vector<std::size_t> neighbour_begin_;
-  std::vector<std::uint32_t> neighbour_;
-  std::vector<double> edge_length_;
+  std::vector<double> edge_length_;  // along mesh_.fan
   std::vector<std::size_t> cluster_order_, cluster_begin_;
   std::vector<std::uint32_t> cluster_of_, position_in_cluster_;
 };
