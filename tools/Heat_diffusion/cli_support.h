@@ -95,6 +95,22 @@ public:
     }
   }
 
+  // Parses the command line of the subcommand `command` (argv[2] on), which takes one
+  // argument, a `what`. Returns false after printing `help` for -h or --help.
+  bool parse_command(int argc, char** argv, const std::string& command, const std::string& what,
+                     const std::string& help)
+  {
+    parse(argc, argv, 2);
+    if(flag("-h") || flag("--help"))
+    {
+      std::cout << help;
+      return false;
+    }
+    if(positional_.size() != 1)
+      throw Usage_error(command + " takes exactly one " + what + " argument");
+    return true;
+  }
+
   bool flag(const std::string& name) const
   {
     return std::find(set_flags_.begin(), set_flags_.end(), name) != set_flags_.end();

@@ -77,14 +77,8 @@ inline int run_decompose(int argc, char** argv)
 {
   const Diffusion_spec spec = decompose_spec();
   Arguments args = diffusion_arguments(spec, {}, {"--levels", "--steps-per-level"});
-  args.parse(argc, argv, 2);
-  if(args.flag("-h") || args.flag("--help"))
-  {
-    std::cout << decompose_help();
+  if(!args.parse_command(argc, argv, "decompose", "MESH", decompose_help()))
     return success;
-  }
-  if(args.positional().size() != 1)
-    throw Usage_error("decompose takes exactly one MESH argument");
   const std::string input = args.positional()[0];
   const Diffusion_options o = parse_diffusion_options(args, spec);
   const std::size_t levels = parse_count("--levels", args.value("--levels", "3"), 1, 1000);

@@ -71,14 +71,8 @@ inline int run_denoise(int argc, char** argv)
   const Diffusion_spec spec = denoise_spec();
   Arguments args = diffusion_arguments(spec, {}, {"--iterations", "--anchor-weight", "--method", "--normal-sigma",
                                                   "--displacement-limit"});
-  args.parse(argc, argv, 2);
-  if(args.flag("-h") || args.flag("--help"))
-  {
-    std::cout << denoise_help();
+  if(!args.parse_command(argc, argv, "denoise", "NOISY mesh", denoise_help()))
     return success;
-  }
-  if(args.positional().size() != 1)
-    throw Usage_error("denoise takes exactly one NOISY mesh argument");
   const std::string input = args.positional()[0];
   const std::string method_name = args.value("--method", "normal_filtering");
   if(method_name != "normal_filtering" && method_name != "signature_diffusion")

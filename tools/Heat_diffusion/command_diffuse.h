@@ -89,14 +89,8 @@ inline int run_diffuse(int argc, char** argv)
 {
   const Diffusion_spec spec = diffuse_spec();
   Arguments args = diffusion_arguments(spec, {"--no-baseline"}, {});
-  args.parse(argc, argv, 2);
-  if(args.flag("-h") || args.flag("--help"))
-  {
-    std::cout << diffuse_help();
+  if(!args.parse_command(argc, argv, "diffuse", "MESH", diffuse_help()))
     return success;
-  }
-  if(args.positional().size() != 1)
-    throw Usage_error("diffuse takes exactly one MESH argument");
   const std::string input = args.positional()[0];
   const Diffusion_options o = parse_diffusion_options(args, spec);
   const std::string prefix = args.value("-o", fs::path(input).stem().string() + "_diffused");

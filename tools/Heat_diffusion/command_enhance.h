@@ -92,14 +92,8 @@ inline int run_enhance(int argc, char** argv)
 {
   const Diffusion_spec spec = enhance_spec();
   Arguments args = diffusion_arguments(spec, {}, {"--weights", "--steps-per-level", "--anchor-weight"});
-  args.parse(argc, argv, 2);
-  if(args.flag("-h") || args.flag("--help"))
-  {
-    std::cout << enhance_help();
+  if(!args.parse_command(argc, argv, "enhance", "MESH", enhance_help()))
     return success;
-  }
-  if(args.positional().size() != 1)
-    throw Usage_error("enhance takes exactly one MESH argument");
   const std::string input = args.positional()[0];
   const Diffusion_options o = parse_diffusion_options(args, spec);
   const std::vector<double> weights = parse_weights(args.value("--weights", "1,3,3"));

@@ -86,14 +86,8 @@ inline int run_features(int argc, char** argv)
 {
   const Diffusion_spec spec = features_spec();
   Arguments args = diffusion_arguments(spec, {}, {"--c"});
-  args.parse(argc, argv, 2);
-  if(args.flag("-h") || args.flag("--help"))
-  {
-    std::cout << features_help();
+  if(!args.parse_command(argc, argv, "features", "MESH", features_help()))
     return success;
-  }
-  if(args.positional().size() != 1)
-    throw Usage_error("features takes exactly one MESH argument");
   const std::string input = args.positional()[0];
   const Diffusion_options o = parse_diffusion_options(args, spec);
   const double c = parse_feature_threshold(args);

@@ -58,14 +58,8 @@ inline int run_hks(int argc, char** argv)
 {
   const Diffusion_spec spec = hks_spec();
   Arguments args = diffusion_arguments(spec, {}, {"--c"});
-  args.parse(argc, argv, 2);
-  if(args.flag("-h") || args.flag("--help"))
-  {
-    std::cout << hks_help();
+  if(!args.parse_command(argc, argv, "hks", "MESH", hks_help()))
     return success;
-  }
-  if(args.positional().size() != 1)
-    throw Usage_error("hks takes exactly one MESH argument");
   const std::string input = args.positional()[0];
   const Diffusion_options o = parse_diffusion_options(args, spec);
   const double t = o.time;

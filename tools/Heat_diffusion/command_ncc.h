@@ -40,14 +40,8 @@ const char* const ncc_help =
 inline int run_ncc(int argc, char** argv)
 {
   Arguments args({"--json", "--quiet", "-h", "--help"}, {"-o", "--normals"});
-  args.parse(argc, argv, 2);
-  if(args.flag("-h") || args.flag("--help"))
-  {
-    std::cout << ncc_help;
+  if(!args.parse_command(argc, argv, "ncc", "MESH", ncc_help))
     return success;
-  }
-  if(args.positional().size() != 1)
-    throw Usage_error("ncc takes exactly one MESH argument");
   const std::string input = args.positional()[0];
   const std::string output = args.value("-o", default_output(input, "_ns.ply"));
   const std::string normals = args.value("--normals", "area");

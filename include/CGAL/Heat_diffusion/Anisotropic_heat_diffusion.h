@@ -331,7 +331,7 @@ private:
 
     Workspace make_workspace() const { return Workspace(); }
     void prepare(std::size_t, Workspace&) const {}
-    double operator()(std::size_t j, std::size_t i, const Workspace&) const
+    double operator()(std::size_t j, std::size_t i, Workspace&) const
     {
       const double dot = psi.row(Eigen::Index(i)).dot(psi.row(Eigen::Index(j)));
       return relative ? kernel->beta(i, j) * dot : dot;
@@ -348,8 +348,8 @@ private:
     struct Workspace
     {
       Eigen::VectorXd psi_j;
-      mutable std::vector<double> dots;             // psi^c_a . psi_j, valid where stamp[a] == generation
-      mutable std::vector<std::size_t> stamp;
+      std::vector<double> dots;  // psi^c_a . psi_j, valid where stamp[a] == generation
+      std::vector<std::size_t> stamp;
       std::size_t generation = 0;
     };
     Eigen::Matrix<double, Eigen::Dynamic, Eigen::Dynamic, Eigen::RowMajor> psi;  // coarse x m
@@ -372,7 +372,9 @@ private:
         w.psi_j.noalias() += it.value() * psi.row(it.index()).transpose();
       ++w.generation;
     }
-    double operator()(std::size_t j, std::size_t i, const Workspace& w) const
+    // (computes the dot products of the coarse vertices of v_i on first use: hence the
+    // workspace is not const)
+    double operator()(std::size_t j, std::size_t i, Workspace& w) const
     {
       double dot = 0;
       for(Eigen::SparseMatrix<double, Eigen::RowMajor>::InnerIterator it(*prolongation, Eigen::Index(i)); it; ++it)
@@ -398,7 +400,7 @@ private:
 
     Workspace make_workspace() const { return kernel.make_workspace(); }
     void prepare(std::size_t j, Workspace& w) const { kernel.compute_column(j, w); }
-    double operator()(std::size_t, std::size_t i, const Workspace& w) const
+    double operator()(std::size_t, std::size_t i, Workspace& w) const
     {
       return internal::Local_heat_kernel::value(w, i);
     }
