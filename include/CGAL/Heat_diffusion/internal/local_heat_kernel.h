@@ -25,6 +25,18 @@
 #include <utility>
 #include <vector>
 
+// The block solves of the local kernel are most of its time, and vectorise: on x86-64
+// with GCC 11 or later (and the GNU ifunc mechanism, Linux), they are also compiled for
+// the x86-64-v3 level (AVX2 and FMA), chosen at run time when the processor has it. The
+// default build targets the baseline x86-64 (SSE2) only. Define
+// CGAL_HEAT_DIFFUSION_NO_TARGET_CLONES to build the baseline alone.
+#if defined(__GNUC__) && !defined(__clang__) && __GNUC__ >= 11 && defined(__x86_64__) && defined(__linux__) && \
+    !defined(CGAL_HEAT_DIFFUSION_NO_TARGET_CLONES)
+#define CGAL_HEAT_DIFFUSION_VECTOR_CLONES __attribute__((target_clones("arch=x86-64-v3", "default")))
+#else
+#define CGAL_HEAT_DIFFUSION_VECTOR_CLONES
+#endif
+
 namespace CGAL {
 namespace Heat_diffusion {
 namespace internal {
@@ -575,6 +587,7 @@ private:
 
   // X <- (L D L^T)^-1 X with the factor of pole m, for the c columns of the block
   // (row-major, split complex).
+  CGAL_HEAT_DIFFUSION_VECTOR_CLONES
   void block_solve(Workspace& w, std::size_t m, std::size_t c) const
   {
     constexpr std::size_t K = number_of_poles;
