@@ -25,11 +25,12 @@
 #include <utility>
 #include <vector>
 
-// The block solves of the local kernel are most of its time, and vectorise: on x86-64
-// with GCC 11 or later (and the GNU ifunc mechanism, Linux), they are also compiled for
-// the x86-64-v3 level (AVX2 and FMA), chosen at run time when the processor has it. The
-// default build targets the baseline x86-64 (SSE2) only. Define
-// CGAL_HEAT_DIFFUSION_NO_TARGET_CLONES to build the baseline alone.
+// The block solves of the local kernel are most of its time, and they vectorise. A
+// compiler's default target is the baseline x86-64 (SSE2); with GCC 11 or later on
+// x86-64 Linux (GNU ifunc) the solves are also compiled for the x86-64-v3 level (AVX2
+// and FMA), and that code is chosen at run time when the processor has it. Define
+// CGAL_HEAT_DIFFUSION_NO_TARGET_CLONES to compile the baseline alone. (The sanitizer
+// build of the tests uses clang, so it runs the baseline.)
 #if defined(__GNUC__) && !defined(__clang__) && __GNUC__ >= 11 && defined(__x86_64__) && defined(__linux__) && \
     !defined(CGAL_HEAT_DIFFUSION_NO_TARGET_CLONES)
 #define CGAL_HEAT_DIFFUSION_VECTOR_CLONES __attribute__((target_clones("arch=x86-64-v3", "default")))
@@ -338,8 +339,8 @@ private:
   }
 
   // The patch: the vertices at distance <= radius from one of the sources (Dijkstra
-  // over the mesh edges, the graph of L), in the order they are reached. Returns true iff no vertex of
-  // their component is left outside.
+  // over the mesh edges, the graph of L), in the order they are reached. Returns true
+  // iff no vertex of their component is left outside.
   bool grow_patch(const std::size_t* sources, std::size_t count, double radius, Workspace& w) const
   {
     next_generation(w);
