@@ -428,8 +428,8 @@ private:
   {
     time_ = t;
     const internal::Local_heat_kernel kernel(ncc_->indexed_mesh(), operators.stiffness, operators.mass, t);
-    // Sources in breadth-first order: consecutive sources share most of their patches,
-    // which then stay in cache.
+    // Sources cluster after cluster: consecutive sources share their patch and its
+    // factorisations.
     build_from_columns(Local_columns{kernel}, kernel.source_order(), progress);
   }
 

@@ -173,6 +173,7 @@ public:
       internal::throw_invalid_input("Edge_weighted_heat_kernel: coarse_vertex_count must be at least 4 (or 0 for none)");
 
     operators_ = internal::assemble_heat_operators(mesh, ncc_.data(), sigma_);
+    mass_diagonal_ = operators_.mass.diagonal();
     timings_.operators = lap();
     if(coarse_vertices_ == 0)
     {
@@ -313,11 +314,11 @@ private:
   const Eigen::SparseMatrix<double, Eigen::RowMajor>& coarse_prolongation() const { return coarse_prolongation_; }
   const Eigen::MatrixXd& coarse_eigenvectors() const { return coarse_eigenvectors_; }
 
-  // The factor beta_ij of eq. 14.
+  // The factor beta_ij of eq. 14 (evaluated for every entry of every heat region of the
+  // scale-invariant kernel: from the stored diagonal, not searched in B's columns).
   double beta(std::size_t i, std::size_t j) const
   {
-    return 0.5 * (operators_.mass.coeff(Eigen::Index(i), Eigen::Index(i)) +
-                  operators_.mass.coeff(Eigen::Index(j), Eigen::Index(j)));
+    return 0.5 * (mass_diagonal_[Eigen::Index(i)] + mass_diagonal_[Eigen::Index(j)]);
   }
 
   // Seconds since the last lap.
@@ -392,6 +393,7 @@ private:
   std::chrono::steady_clock::time_point clock_ = std::chrono::steady_clock::now();
   NCC ncc_;
   internal::Heat_operators operators_;
+  Eigen::VectorXd mass_diagonal_;  // of operators_.mass, for beta()
   Eigen::VectorXd eigenvalues_;
   Eigen::MatrixXd eigenvectors_;
   Eigen::SparseMatrix<double, Eigen::RowMajor> coarse_prolongation_;  // coarse level: P, n x c

@@ -9,9 +9,9 @@
 #include <CGAL/boost/graph/helpers.h>
 #include <CGAL/boost/graph/iterator.h>
 #include <CGAL/hilbert_sort.h>
-#include <CGAL/tags.h>
 #include <CGAL/number_utils.h>
 #include <CGAL/property_map.h>
+#include <CGAL/tags.h>
 
 #include <Eigen/Core>
 #include <Eigen/Geometry>
@@ -21,10 +21,10 @@
 #include <cmath>
 #include <cstddef>
 #include <limits>
+#include <numeric>
 #include <sstream>
 #include <stdexcept>
 #include <string>
-#include <numeric>
 #include <vector>
 
 namespace CGAL {
