@@ -94,7 +94,7 @@ std::size_t check_heat_balance(const Local_kernel& kernel, const Sparse_matrix& 
   {
     const std::size_t j = kernel.source_order()[position];
     kernel.compute_column(j, workspace);
-    const bool is_enlarged = workspace.enlargements > 0;
+    const bool is_enlarged = Local_kernel::enlargements(workspace) > 0;
     enlarged += is_enlarged ? 1 : 0;
     if(position % 16 != 0 && !(is_enlarged && enlarged <= 50))
       continue;
@@ -208,7 +208,7 @@ void check_columns(const std::string& name, double sigma)
       local_error = (std::max)(local_error, relative_error(local_column(local, j, n, workspace), exact));
       patch_min = (std::min)(patch_min, Local_kernel::patch(workspace).size());
       patch_max = (std::max)(patch_max, Local_kernel::patch(workspace).size());
-      enlargements_max = (std::max)(enlargements_max, workspace.enlargements);
+      enlargements_max = (std::max)(enlargements_max, Local_kernel::enlargements(workspace));
       lumped_error = (std::max)(lumped_error, relative_error(local_column(lumped, j, n, workspace), exact));
       Eigen::VectorXd truncated(static_cast<Eigen::Index>(n));
       for(std::size_t i = 0; i < n; ++i)

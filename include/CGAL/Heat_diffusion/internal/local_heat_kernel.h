@@ -26,9 +26,9 @@
 #include <utility>
 #include <vector>
 
-// The block solves of the local kernel are most of its time, and they vectorise. A
-// compiler's default target is the baseline x86-64 (SSE2); with GCC 11 or later on
-// x86-64 Linux (GNU ifunc) the solves are also compiled for the x86-64-v3 level (AVX2
+// The forward and back substitutions are the largest part of the local kernel's time,
+// and they vectorise. A compiler's default target is the baseline x86-64 (SSE2); with
+// GCC 11 or later on x86-64 Linux (GNU ifunc) they are also compiled for the x86-64-v3 level (AVX2
 // and FMA), and that code is chosen at run time when the processor has it. Define
 // CGAL_HEAT_DIFFUSION_NO_TARGET_CLONES to compile the baseline alone. (The sanitizer
 // build of the tests uses clang, so it runs the baseline.)
@@ -250,8 +250,8 @@ public:
     std::unique_ptr<Workspace> enlarged;
     bool reads_enlarged = false;  // the last column is in `enlarged`
 
-    // What the last column needed (for statistics and tests): the enlargements of its
-    // patch.
+    // How many times this workspace's patch was enlarged (0 for a cluster's patch);
+    // enlargements() tells it for the last column.
     std::size_t enlargements = 0;
   };
 
@@ -319,10 +319,8 @@ public:
       const std::size_t* sources = cluster_order_.data() + cluster_begin_[c];
       const std::size_t count = cluster_begin_[c + 1] - cluster_begin_[c];
       compute_cluster(sources, count, initial_radius_, w);
-      // The columns that fail the heat balance (a few sources of some clusters, where
-      // the sampling changes fast, say) are computed again on patches enlarged around
-      // them alone, until every one passes or the patch is the whole component. The
-      // columns depend on the cluster only.
+      // The columns that fail the heat balance: again on patches enlarged around their
+      // sources alone, until all pass or the patch is the whole component.
       w.enlarged_sources.clear();
       w.enlarged_position.assign(count, not_in_patch);
       if(!w.whole_component)
@@ -350,15 +348,9 @@ public:
     const std::uint32_t position = position_in_cluster_[j];
     w.reads_enlarged = w.enlarged_position[position] != not_in_patch;
     if(w.reads_enlarged)
-    {
       w.enlarged->source_position = w.enlarged_position[position];
-      w.enlargements = w.enlarged->enlargements;
-    }
     else
-    {
       w.source_position = position;
-      w.enlargements = 0;
-    }
   }
 
   static double value(Workspace& w, std::size_t i)
@@ -376,6 +368,12 @@ public:
   static const std::vector<std::uint32_t>& patch(const Workspace& w)
   {
     return w.reads_enlarged ? w.enlarged->patch : w.patch;
+  }
+
+  // The enlargements the patch of the last column needed (for statistics and tests).
+  static std::size_t enlargements(const Workspace& w)
+  {
+    return w.reads_enlarged ? w.enlarged->enlargements : 0;
   }
 
 private:
@@ -791,14 +789,11 @@ private:
     const std::array<Exponential_pole, K>& poles = exponential_poles();
     for(std::size_t s = 0; s < c; ++s)
     {
+      // (row r holds the right-hand side of source s only)
       const std::size_t r = std::size_t(w.inverse_permutation[w.local[sources[s]]]);
       std::fill_n(w.block_real.data() + r * K * c, K * c, 0.);
       std::fill_n(w.block_imag.data() + r * K * c, K * c, 0.);
       w.row_is_nonzero[r] = 1;
-    }
-    for(std::size_t s = 0; s < c; ++s)
-    {
-      const std::size_t r = std::size_t(w.inverse_permutation[w.local[sources[s]]]);
       for(std::size_t m = 0; m < K; ++m)
       {
         w.block_real[(r * K + m) * c + s] = -poles[m].residue_real;
