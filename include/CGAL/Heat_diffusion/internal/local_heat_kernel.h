@@ -140,7 +140,7 @@ inline std::vector<std::size_t> clustered_order(const Indexed_mesh& mesh, std::s
 }
 
 // The number of sources whose columns share one patch and its factorisations.
-constexpr std::size_t default_local_cluster_size = 64;
+constexpr std::size_t default_local_cluster_size = 96;
 
 // Which mass matrix the local kernel uses. `consistent` is the FEM mass matrix B of
 // eq. 11, the operator of the spectral kernel; `lumped` replaces it by its row sums
@@ -181,14 +181,17 @@ enum class Local_kernel_mass { consistent, lumped };
 // runs give identical results.
 //
 // Solving where the columns are read. A heat region needs the column on a fraction of
-// the patch, near its source. The forward substitutions of unit right-hand sides fill
-// in only the sources' ancestors in the elimination tree, and the back substitution of
-// a row needs only its ancestors: value() solves a row, and the ancestors not solved
-// yet, when it is first read (for all the cluster's columns at once); on armadillo at
-// t = 1 that is 63 % of the rows, late in the elimination order. The heat
-// balance needs no column in full: with M_k = L_k D_k L_k^T (complex symmetric),
-// 1^T B_P h_s = sum_k Re(u_k^T D_k^-1 y_ks), where u_k = L_k^-1 B_P 1 is computed with
-// the factor and y_ks = L_k^-1 (-a_k e_s) is the forward solution.
+// the patch, near its source. The forward substitution of a unit right-hand side fills
+// in only the source's ancestors in the elimination tree; with the sources ordered by
+// the postorder of their rows, the sources below a row are consecutive block columns,
+// and each row updates only those (a third of the full block's work on armadillo at
+// t = 1). The back substitution of a row needs only its ancestors: value() solves a
+// row, and the ancestors not solved yet, when it is first read (for all the cluster's
+// columns at once); on armadillo at t = 1 that is 64 % of the rows, late in the
+// elimination order. The heat balance needs no column in full: with
+// M_k = L_k D_k L_k^T (complex symmetric), 1^T B_P h_s = sum_k Re(u_k^T D_k^-1 y_ks),
+// where u_k = L_k^-1 B_P 1 is computed with the factor and y_ks = L_k^-1 (-a_k e_s) is
+// the forward solution.
 //
 // Cost per cluster of c sources: a patch of p ~ (sqrt(c) + radius)^2 vertices, three
 // complex factorisations of it, and 3 c complex forward and back substitutions on part
@@ -228,7 +231,14 @@ public:
     Eigen::SparseMatrix<double, Eigen::ColMajor, int> ordering_pattern;
     // the right-hand sides, then the solutions: p rows of (pole, source), split complex
     std::vector<double> block_real, block_imag;
-    std::vector<unsigned char> row_is_nonzero;  // reached by the forward substitution
+    // The sources in the blocks: ordered by the postorder of their rows in the
+    // elimination tree, so that the sources in the subtree of row j are the consecutive
+    // block columns [source_begin[j], source_end[j]): the forward solutions are zero
+    // outside them (an empty range: the row stays zero).
+    std::vector<std::uint32_t> block_column;  // per source of the cluster
+    std::vector<std::uint32_t> source_begin, source_end;
+    std::vector<int> first_child, next_sibling, postorder, tree_stack;
+    std::vector<std::pair<int, std::uint32_t> > source_rank;
     std::vector<unsigned char> row_is_solved;   // by the back substitution
     std::vector<int> ancestors;                 // the rows value() solves next
     std::vector<double> heat_forward_real, heat_forward_imag;  // L_k^-1 B_P 1, rows of poles
@@ -237,8 +247,10 @@ public:
     const void* owner = nullptr;
     std::size_t cluster = no_cluster;
     bool whole_component = false;
-    Eigen::MatrixXd columns;        // p x c, the cluster's columns on its patch (the solved rows)
+    // p x c, the cluster's columns on its patch (the solved rows), in block column order
+    Eigen::MatrixXd columns;
     std::vector<double> deficits;   // |1 - 1^T B_P h| of each
+    std::vector<double> balance;    // 1 - 1^T B_P h, per block column
     std::size_t source_position = 0;  // the column of the last compute_column()
 
     // The sources of the cluster whose columns lost more heat than the tolerance through
@@ -361,7 +373,7 @@ public:
     const int row = v.inverse_permutation[v.local[i]];
     if(!v.row_is_solved[std::size_t(row)])
       solve_row(v, row);
-    return v.columns(Eigen::Index(v.local[i]), Eigen::Index(v.source_position));
+    return v.columns(Eigen::Index(v.local[i]), Eigen::Index(v.block_column[v.source_position]));
   }
 
   // The patch of the last column (global indices).
@@ -654,9 +666,10 @@ private:
     }
   }
 
-  // Forward substitution X_k <- L_k^-1 X_k for the c right-hand sides of all poles,
-  // skipping the rows that stay zero: with unit right-hand sides only the sources'
-  // ancestors in the elimination tree fill in.
+  // Forward substitution X_k <- L_k^-1 X_k for the c right-hand sides of all poles.
+  // With unit right-hand sides, the solution of a source is not zero only on the
+  // source's ancestors in the elimination tree: row j updates only the block columns
+  // of the sources in its subtree, and the rows without any are skipped.
   CGAL_HEAT_DIFFUSION_VECTOR_CLONES
   static void forward_substitution(Workspace& w, std::size_t c)
   {
@@ -664,18 +677,13 @@ private:
     const std::size_t p = w.patch.size();
     for(std::size_t j = 0; j < p; ++j)
     {
-      if(!w.row_is_nonzero[j])
+      const std::size_t begin = w.source_begin[j], end = w.source_end[j];
+      if(begin >= end)
         continue;
       const std::size_t q1 = std::size_t(w.factor_begin[j + 1]);
       for(std::size_t q = std::size_t(w.factor_begin[j]); q < q1; ++q)
       {
         const std::size_t i = std::size_t(w.factor_row[q]);
-        if(!w.row_is_nonzero[i])  // reached for the first time
-        {
-          std::fill_n(w.block_real.data() + i * K * c, K * c, 0.);
-          std::fill_n(w.block_imag.data() + i * K * c, K * c, 0.);
-          w.row_is_nonzero[i] = 1;
-        }
         for(std::size_t m = 0; m < K; ++m)
         {
           const double lr = w.factor_real[q * K + m], li = w.factor_imag[q * K + m];
@@ -683,7 +691,7 @@ private:
           const double* ai = w.block_imag.data() + (j * K + m) * c;
           double* br = w.block_real.data() + (i * K + m) * c;
           double* bi = w.block_imag.data() + (i * K + m) * c;
-          for(std::size_t s = 0; s < c; ++s)
+          for(std::size_t s = begin; s < end; ++s)
           {
             br[s] -= lr * ar[s] - li * ai[s];
             bi[s] -= lr * ai[s] + li * ar[s];
@@ -704,7 +712,7 @@ private:
     for(std::size_t position = w.ancestors.size(); position-- > 0;)
     {
       const std::size_t j = std::size_t(w.ancestors[position]);
-      if(!w.row_is_nonzero[j])  // not reached by the forward substitution: zero
+      if(w.source_begin[j] >= w.source_end[j])  // no source below it: the row is zero
       {
         std::fill_n(w.block_real.data() + j * K * c, K * c, 0.);
         std::fill_n(w.block_imag.data() + j * K * c, K * c, 0.);
@@ -766,6 +774,74 @@ private:
     back_substitution(w, std::size_t(w.columns.cols()));
   }
 
+  // Orders the c sources by the postorder of their rows in the elimination tree
+  // (w.block_column), and finds the block columns [source_begin[j], source_end[j]) of
+  // the sources in the subtree of each row j; clears the rows where that is not empty,
+  // the rows the forward substitution writes.
+  static void order_sources(const std::size_t* sources, std::size_t c, Workspace& w)
+  {
+    constexpr std::size_t K = number_of_poles;
+    const int p = int(w.patch.size());
+    // postorder of the elimination forest: children lists, then depth first
+    w.first_child.assign(std::size_t(p), -1);
+    w.next_sibling.assign(std::size_t(p), -1);
+    for(int j = p - 1; j >= 0; --j)
+    {
+      const int parent = w.parent[std::size_t(j)];
+      if(parent != -1)
+      {
+        w.next_sibling[std::size_t(j)] = w.first_child[std::size_t(parent)];
+        w.first_child[std::size_t(parent)] = j;
+      }
+    }
+    w.postorder.resize(std::size_t(p));
+    int rank = 0;
+    for(int root = 0; root < p; ++root)
+    {
+      if(w.parent[std::size_t(root)] != -1)
+        continue;
+      w.tree_stack.assign(1, root);
+      while(!w.tree_stack.empty())
+      {
+        const int j = w.tree_stack.back();
+        const int child = w.first_child[std::size_t(j)];
+        if(child == -1)
+        {
+          w.postorder[std::size_t(j)] = rank++;
+          w.tree_stack.pop_back();
+        }
+        else
+        {
+          w.first_child[std::size_t(j)] = w.next_sibling[std::size_t(child)];  // (consumed)
+          w.tree_stack.push_back(child);
+        }
+      }
+    }
+    w.source_rank.resize(c);
+    for(std::size_t s = 0; s < c; ++s)
+      w.source_rank[s] = {w.postorder[std::size_t(w.inverse_permutation[w.local[sources[s]]])], std::uint32_t(s)};
+    std::sort(w.source_rank.begin(), w.source_rank.end());
+    w.block_column.resize(c);
+    w.source_begin.assign(std::size_t(p), 0);
+    w.source_end.assign(std::size_t(p), 0);
+    for(std::size_t column = 0; column < c; ++column)
+    {
+      const std::size_t s = w.source_rank[column].second;
+      w.block_column[s] = std::uint32_t(column);
+      // (columns come in increasing order: the first visit of a row gives its begin)
+      for(int j = w.inverse_permutation[w.local[sources[s]]]; j != -1; j = w.parent[std::size_t(j)])
+      {
+        if(w.source_end[std::size_t(j)] == 0)
+        {
+          w.source_begin[std::size_t(j)] = std::uint32_t(column);
+          std::fill_n(w.block_real.data() + std::size_t(j) * K * c, K * c, 0.);
+          std::fill_n(w.block_imag.data() + std::size_t(j) * K * c, K * c, 0.);
+        }
+        w.source_end[std::size_t(j)] = std::uint32_t(column + 1);
+      }
+    }
+  }
+
   // The columns of `count` sources on the union of their balls of `radius`, solved up
   // to the back substitution, which value() completes row by row where the columns
   // are read: the heat regions need a fraction of the patch, and the rows they need
@@ -779,36 +855,32 @@ private:
     analyse(w);
     const std::size_t p = w.patch.size(), c = count;
     w.columns.resize(Eigen::Index(p), Eigen::Index(c));
-    // (rows are cleared where the substitutions first reach them)
+    // (the rows are cleared by order_sources() or where the back substitution reaches them)
     w.block_real.resize(K * p * c);
     w.block_imag.resize(K * p * c);
-    w.row_is_nonzero.assign(p, 0);
     w.row_is_solved.assign(p, 0);
     factorise(w);
+    order_sources(sources, c, w);
     // right-hand sides -a_k e_j, then h = sum_k Re((t L + z_k B)^-1 (-a_k e_j))
     const std::array<Exponential_pole, K>& poles = exponential_poles();
     for(std::size_t s = 0; s < c; ++s)
     {
-      // (row r holds the right-hand side of source s only)
       const std::size_t r = std::size_t(w.inverse_permutation[w.local[sources[s]]]);
-      std::fill_n(w.block_real.data() + r * K * c, K * c, 0.);
-      std::fill_n(w.block_imag.data() + r * K * c, K * c, 0.);
-      w.row_is_nonzero[r] = 1;
       for(std::size_t m = 0; m < K; ++m)
       {
-        w.block_real[(r * K + m) * c + s] = -poles[m].residue_real;
-        w.block_imag[(r * K + m) * c + s] = -poles[m].residue_imag;
+        w.block_real[(r * K + m) * c + w.block_column[s]] = -poles[m].residue_real;
+        w.block_imag[(r * K + m) * c + w.block_column[s]] = -poles[m].residue_imag;
       }
     }
     forward_substitution(w, c);
     // The heat balance, 1 - 1^T B_P h_s = 1 - sum_k Re(u_k^T D_k^-1 y_ks) (see above),
     // over the rows where the forward solutions y_ks are not zero.
-    w.deficits.assign(c, 1.);
+    std::vector<double>& balance = w.balance;
+    balance.assign(c, 1.);
     for(std::size_t j = 0; j < p; ++j)
     {
-      if(!w.row_is_nonzero[j])
-        continue;
-      for(std::size_t m = 0; m < K; ++m)
+      const std::size_t begin = w.source_begin[j], end = w.source_end[j];
+      for(std::size_t m = 0; begin < end && m < K; ++m)
       {
         const double er = w.diagonal_real[j * K + m], ei = w.diagonal_imag[j * K + m];
         const double ur = w.heat_forward_real[j * K + m], ui = w.heat_forward_imag[j * K + m];
@@ -816,12 +888,13 @@ private:
         const double gr = (ur * er + ui * ei) * scale, gi = (ui * er - ur * ei) * scale;  // u_j / d_j
         const double* yr = w.block_real.data() + (j * K + m) * c;
         const double* yi = w.block_imag.data() + (j * K + m) * c;
-        for(std::size_t s = 0; s < c; ++s)
-          w.deficits[s] -= gr * yr[s] - gi * yi[s];
+        for(std::size_t s = begin; s < end; ++s)
+          balance[s] -= gr * yr[s] - gi * yi[s];
       }
     }
-    for(double& deficit : w.deficits)
-      deficit = std::abs(deficit);
+    w.deficits.resize(c);
+    for(std::size_t s = 0; s < c; ++s)
+      w.deficits[s] = std::abs(balance[w.block_column[s]]);
   }
 
   // r(x) ~ exp(-x) of exponential_poles() must have as many poles as this class uses
