@@ -137,7 +137,7 @@ public:
   ///
   /// Complexity: that of `Edge_weighted_heat_kernel` plus the construction from a kernel
   /// below (spectral); linear in the number of vertices for a fixed t (local: per
-  /// cluster of 64 sources, three complex sparse factorisations on a patch whose size
+  /// cluster of 96 sources, three complex sparse factorisations on a patch whose size
   /// grows like t, and block solves on the part of it that the heat regions read;
   /// parallel with TBB).
   template <typename NamedParameters = parameters::Default_named_parameters>
