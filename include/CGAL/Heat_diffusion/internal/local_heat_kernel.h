@@ -237,7 +237,7 @@ public:
     // outside them (an empty range: the row stays zero).
     std::vector<std::uint32_t> block_column;  // per source of the cluster
     std::vector<std::uint32_t> source_begin, source_end;
-    std::vector<int> first_child, next_sibling, postorder, tree_stack;
+    std::vector<int> first_child, next_sibling, postorder, tree_stack;  // (order_sources())
     std::vector<std::pair<int, std::uint32_t> > source_rank;
     std::vector<unsigned char> row_is_solved;   // by the back substitution
     std::vector<int> ancestors;                 // the rows value() solves next
@@ -880,7 +880,9 @@ private:
     for(std::size_t j = 0; j < p; ++j)
     {
       const std::size_t begin = w.source_begin[j], end = w.source_end[j];
-      for(std::size_t m = 0; begin < end && m < K; ++m)
+      if(begin >= end)
+        continue;
+      for(std::size_t m = 0; m < K; ++m)
       {
         const double er = w.diagonal_real[j * K + m], ei = w.diagonal_imag[j * K + m];
         const double ur = w.heat_forward_real[j * K + m], ui = w.heat_forward_imag[j * K + m];
