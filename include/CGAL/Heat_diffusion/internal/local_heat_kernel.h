@@ -171,8 +171,8 @@ enum class Local_kernel_mass { consistent, lumped };
 // factorisation without pivoting exists and is stable; it is computed in complex
 // arithmetic by a simplicial up-looking LDL^T (after Davis's LDL) with an AMD ordering.
 //
-// Clusters. The sources are partitioned into compact clusters of about 64 vertices
-// (clustered_order()); one patch, the union of the balls of its sources, serves the
+// Clusters. The sources are partitioned into compact clusters of about
+// default_local_cluster_size vertices (clustered_order()); one patch, the union of the balls of its sources, serves the
 // whole cluster: one ordering, one symbolic analysis and three numeric factorisations
 // per cluster, and the cluster's columns solved together as a block (contiguous rows,
 // vectorised). A workspace keeps the last cluster's columns, so the sources should
@@ -237,7 +237,7 @@ public:
     // outside them (an empty range: the row stays zero).
     std::vector<std::uint32_t> block_column;  // per source of the cluster
     std::vector<std::uint32_t> source_begin, source_end;
-    std::vector<int> first_child, next_sibling, postorder, tree_stack;  // (order_sources())
+    std::vector<int> first_child, next_sibling, postorder, tree_stack;  // (place_sources())
     std::vector<std::pair<int, std::uint32_t> > source_rank;
     std::vector<unsigned char> row_is_solved;   // by the back substitution
     std::vector<int> ancestors;                 // the rows value() solves next
@@ -249,8 +249,7 @@ public:
     bool whole_component = false;
     // p x c, the cluster's columns on its patch (the solved rows), in block column order
     Eigen::MatrixXd columns;
-    std::vector<double> deficits;   // |1 - 1^T B_P h| of each
-    std::vector<double> balance;    // 1 - 1^T B_P h, per block column
+    std::vector<double> deficits;   // |1 - 1^T B_P h| of each, per block column
     std::size_t source_position = 0;  // the column of the last compute_column()
 
     // The sources of the cluster whose columns lost more heat than the tolerance through
@@ -337,7 +336,7 @@ public:
       w.enlarged_position.assign(count, not_in_patch);
       if(!w.whole_component)
         for(std::size_t s = 0; s < count; ++s)
-          if(w.deficits[s] > tolerance_)
+          if(w.deficits[w.block_column[s]] > tolerance_)
           {
             w.enlarged_position[s] = std::uint32_t(w.enlarged_sources.size());
             w.enlarged_sources.push_back(sources[s]);
@@ -777,8 +776,9 @@ private:
   // Orders the c sources by the postorder of their rows in the elimination tree
   // (w.block_column), and finds the block columns [source_begin[j], source_end[j]) of
   // the sources in the subtree of each row j; clears the rows where that is not empty,
-  // the rows the forward substitution writes.
-  static void order_sources(const std::size_t* sources, std::size_t c, Workspace& w)
+  // the rows the forward substitution writes, and writes the right-hand sides
+  // -a_k e_s.
+  static void place_sources(const std::size_t* sources, std::size_t c, Workspace& w)
   {
     constexpr std::size_t K = number_of_poles;
     const int p = int(w.patch.size());
@@ -817,19 +817,21 @@ private:
         }
       }
     }
-    w.source_rank.resize(c);
+    w.source_rank.resize(c);  // (postorder of the source's row, the source)
     for(std::size_t s = 0; s < c; ++s)
       w.source_rank[s] = {w.postorder[std::size_t(w.inverse_permutation[w.local[sources[s]]])], std::uint32_t(s)};
     std::sort(w.source_rank.begin(), w.source_rank.end());
+    const std::array<Exponential_pole, K>& poles = exponential_poles();
     w.block_column.resize(c);
     w.source_begin.assign(std::size_t(p), 0);
     w.source_end.assign(std::size_t(p), 0);
     for(std::size_t column = 0; column < c; ++column)
     {
       const std::size_t s = w.source_rank[column].second;
+      const int row = w.inverse_permutation[w.local[sources[s]]];
       w.block_column[s] = std::uint32_t(column);
       // (columns come in increasing order: the first visit of a row gives its begin)
-      for(int j = w.inverse_permutation[w.local[sources[s]]]; j != -1; j = w.parent[std::size_t(j)])
+      for(int j = row; j != -1; j = w.parent[std::size_t(j)])
       {
         if(w.source_end[std::size_t(j)] == 0)
         {
@@ -838,6 +840,11 @@ private:
           std::fill_n(w.block_imag.data() + std::size_t(j) * K * c, K * c, 0.);
         }
         w.source_end[std::size_t(j)] = std::uint32_t(column + 1);
+      }
+      for(std::size_t m = 0; m < K; ++m)
+      {
+        w.block_real[(std::size_t(row) * K + m) * c + column] = -poles[m].residue_real;
+        w.block_imag[(std::size_t(row) * K + m) * c + column] = -poles[m].residue_imag;
       }
     }
   }
@@ -855,28 +862,17 @@ private:
     analyse(w);
     const std::size_t p = w.patch.size(), c = count;
     w.columns.resize(Eigen::Index(p), Eigen::Index(c));
-    // (the rows are cleared by order_sources() or where the back substitution reaches them)
+    // (the rows are cleared by place_sources() or where the back substitution reaches them)
     w.block_real.resize(K * p * c);
     w.block_imag.resize(K * p * c);
     w.row_is_solved.assign(p, 0);
     factorise(w);
-    order_sources(sources, c, w);
     // right-hand sides -a_k e_j, then h = sum_k Re((t L + z_k B)^-1 (-a_k e_j))
-    const std::array<Exponential_pole, K>& poles = exponential_poles();
-    for(std::size_t s = 0; s < c; ++s)
-    {
-      const std::size_t r = std::size_t(w.inverse_permutation[w.local[sources[s]]]);
-      for(std::size_t m = 0; m < K; ++m)
-      {
-        w.block_real[(r * K + m) * c + w.block_column[s]] = -poles[m].residue_real;
-        w.block_imag[(r * K + m) * c + w.block_column[s]] = -poles[m].residue_imag;
-      }
-    }
+    place_sources(sources, c, w);
     forward_substitution(w, c);
     // The heat balance, 1 - 1^T B_P h_s = 1 - sum_k Re(u_k^T D_k^-1 y_ks) (see above),
     // over the rows where the forward solutions y_ks are not zero.
-    std::vector<double>& balance = w.balance;
-    balance.assign(c, 1.);
+    w.deficits.assign(c, 1.);
     for(std::size_t j = 0; j < p; ++j)
     {
       const std::size_t begin = w.source_begin[j], end = w.source_end[j];
@@ -891,12 +887,11 @@ private:
         const double* yr = w.block_real.data() + (j * K + m) * c;
         const double* yi = w.block_imag.data() + (j * K + m) * c;
         for(std::size_t s = begin; s < end; ++s)
-          balance[s] -= gr * yr[s] - gi * yi[s];
+          w.deficits[s] -= gr * yr[s] - gi * yi[s];
       }
     }
-    w.deficits.resize(c);
-    for(std::size_t s = 0; s < c; ++s)
-      w.deficits[s] = std::abs(balance[w.block_column[s]]);
+    for(double& deficit : w.deficits)
+      deficit = std::abs(deficit);
   }
 
   // r(x) ~ exp(-x) of exponential_poles() must have as many poles as this class uses
