@@ -237,7 +237,7 @@ public:
     // outside them (an empty range: the row stays zero).
     std::vector<std::uint32_t> block_column;  // per source of the cluster
     std::vector<std::uint32_t> source_begin, source_end;
-    std::vector<int> first_child, next_sibling, postorder, tree_stack;  // (place_sources())
+    Eigen::VectorXi tree_parent, postorder;  // (place_sources())
     std::vector<std::pair<int, std::uint32_t> > source_rank;
     std::vector<unsigned char> row_is_solved;   // by the back substitution
     std::vector<int> ancestors;                 // the rows value() solves next
@@ -782,41 +782,11 @@ private:
   {
     constexpr std::size_t K = number_of_poles;
     const int p = int(w.patch.size());
-    // postorder of the elimination forest: children lists, then depth first
-    w.first_child.assign(std::size_t(p), -1);
-    w.next_sibling.assign(std::size_t(p), -1);
-    for(int j = p - 1; j >= 0; --j)
-    {
-      const int parent = w.parent[std::size_t(j)];
-      if(parent != -1)
-      {
-        w.next_sibling[std::size_t(j)] = w.first_child[std::size_t(parent)];
-        w.first_child[std::size_t(parent)] = j;
-      }
-    }
-    w.postorder.resize(std::size_t(p));
-    int rank = 0;
-    for(int root = 0; root < p; ++root)
-    {
-      if(w.parent[std::size_t(root)] != -1)
-        continue;
-      w.tree_stack.assign(1, root);
-      while(!w.tree_stack.empty())
-      {
-        const int j = w.tree_stack.back();
-        const int child = w.first_child[std::size_t(j)];
-        if(child == -1)
-        {
-          w.postorder[std::size_t(j)] = rank++;
-          w.tree_stack.pop_back();
-        }
-        else
-        {
-          w.first_child[std::size_t(j)] = w.next_sibling[std::size_t(child)];  // (consumed)
-          w.tree_stack.push_back(child);
-        }
-      }
-    }
+    // the postorder of the elimination forest (Eigen's, whose roots hang from a root p)
+    w.tree_parent.resize(p);
+    for(int j = 0; j < p; ++j)
+      w.tree_parent[j] = w.parent[std::size_t(j)] == -1 ? p : w.parent[std::size_t(j)];
+    Eigen::internal::treePostorder(p, w.tree_parent, w.postorder);
     w.source_rank.resize(c);  // (postorder of the source's row, the source)
     for(std::size_t s = 0; s < c; ++s)
       w.source_rank[s] = {w.postorder[std::size_t(w.inverse_permutation[w.local[sources[s]]])], std::uint32_t(s)};
