@@ -19,6 +19,7 @@
 #include <array>
 #include <cmath>
 #include <cstdint>
+#include <cstring>
 #include <limits>
 #include <memory>
 #include <stdexcept>
@@ -42,6 +43,20 @@
 namespace CGAL {
 namespace Heat_diffusion {
 namespace internal {
+
+// The back substitution sums each row up in registers, in vectors of four doubles (GCC's
+// and Clang's vector extensions): one AVX register in the x86-64-v3 clone, two SSE2
+// registers in the baseline code. Other compilers, or CGAL_HEAT_DIFFUSION_NO_VECTOR_EXTENSIONS,
+// get plain loops that update the row in memory for each factor entry, which they can
+// vectorise themselves. (The vectors are passed by reference: by value, they would change
+// the calling convention between the baseline code and its clone.)
+#if defined(__GNUC__) && !defined(CGAL_HEAT_DIFFUSION_NO_VECTOR_EXTENSIONS)
+#define CGAL_HEAT_DIFFUSION_VECTOR_EXTENSIONS
+typedef double Four_doubles __attribute__((vector_size(4 * sizeof(double))));
+
+inline void load_four(Four_doubles& x, const double* p) { std::memcpy(&x, p, sizeof x); }
+inline void store_four(double* p, const Four_doubles& x) { std::memcpy(p, &x, sizeof x); }
+#endif
 
 // The rational approximation of exp(-x) on [0, inf) used by the local kernel:
 //   exp(-x) ~ sum_k Re( a_k / (-x - z_k) ),
@@ -229,8 +244,11 @@ public:
     std::vector<int> parent, factor_begin, factor_count, flag, pattern, factor_row;
     std::vector<double> factor_real, factor_imag, diagonal_real, diagonal_imag, y_real, y_imag;
     Eigen::SparseMatrix<double, Eigen::ColMajor, int> ordering_pattern;
-    // the right-hand sides, then the solutions: p rows of (pole, source), split complex
+    // the right-hand sides, then the solutions: p rows of (pole, source), split complex;
+    // a row holds `stride` block columns, the sources rounded up to lanes_per_pass (the
+    // extra columns stay zero)
     std::vector<double> block_real, block_imag;
+    std::size_t stride = 0;
     // The sources in the blocks: ordered by the postorder of their rows in the
     // elimination tree, so that the sources in the subtree of row j are the consecutive
     // block columns [source_begin[j], source_end[j]): the forward solutions are zero
@@ -555,6 +573,9 @@ private:
   }
 
   static constexpr std::size_t number_of_poles = 3;  // exponential_poles().size()
+  // The block columns the back substitution sums up in registers at a time (a multiple
+  // of 4; 16 was slower), and the multiple to which a block row is rounded up.
+  static constexpr std::size_t lanes_per_pass = 8;
 
   // Numeric LDL^T of P (t L_P + z_k B_P) P^T for the poles z_k together (they share the
   // symbolic analysis: one traversal), complex symmetric (no conjugation). Entry q of
@@ -670,10 +691,10 @@ private:
   // source's ancestors in the elimination tree: row j updates only the block columns
   // of the sources in its subtree, and the rows without any are skipped.
   CGAL_HEAT_DIFFUSION_VECTOR_CLONES
-  static void forward_substitution(Workspace& w, std::size_t c)
+  static void forward_substitution(Workspace& w)
   {
     constexpr std::size_t K = number_of_poles;
-    const std::size_t p = w.patch.size();
+    const std::size_t p = w.patch.size(), stride = w.stride;
     for(std::size_t j = 0; j < p; ++j)
     {
       const std::size_t begin = w.source_begin[j], end = w.source_end[j];
@@ -686,10 +707,10 @@ private:
         for(std::size_t m = 0; m < K; ++m)
         {
           const double lr = w.factor_real[q * K + m], li = w.factor_imag[q * K + m];
-          const double* ar = w.block_real.data() + (j * K + m) * c;
-          const double* ai = w.block_imag.data() + (j * K + m) * c;
-          double* br = w.block_real.data() + (i * K + m) * c;
-          double* bi = w.block_imag.data() + (i * K + m) * c;
+          const double* ar = w.block_real.data() + (j * K + m) * stride;
+          const double* ai = w.block_imag.data() + (j * K + m) * stride;
+          double* br = w.block_real.data() + (i * K + m) * stride;
+          double* bi = w.block_imag.data() + (i * K + m) * stride;
           for(std::size_t s = begin; s < end; ++s)
           {
             br[s] -= lr * ar[s] - li * ai[s];
@@ -705,59 +726,93 @@ private:
   // factor column, which are among its ancestors in the elimination tree and so already
   // solved. Then the cluster's columns on those rows: sum_k Re X_k.
   CGAL_HEAT_DIFFUSION_VECTOR_CLONES
-  static void back_substitution(Workspace& w, std::size_t c)
+  static void back_substitution(Workspace& w)
   {
     constexpr std::size_t K = number_of_poles;
+    const std::size_t stride = w.stride;
     for(std::size_t position = w.ancestors.size(); position-- > 0;)
     {
       const std::size_t j = std::size_t(w.ancestors[position]);
-      if(w.source_begin[j] >= w.source_end[j])  // no source below it: the row is zero
+      const bool zero = w.source_begin[j] >= w.source_end[j];  // no source below it
+      const std::size_t q0 = std::size_t(w.factor_begin[j]), q1 = std::size_t(w.factor_begin[j + 1]);
+      for(std::size_t m = 0; m < K; ++m)
       {
-        std::fill_n(w.block_real.data() + j * K * c, K * c, 0.);
-        std::fill_n(w.block_imag.data() + j * K * c, K * c, 0.);
-      }
-      else
-      {
-        for(std::size_t m = 0; m < K; ++m)
+        const double er = w.diagonal_real[j * K + m], ei = w.diagonal_imag[j * K + m];
+        const double scale = 1. / (er * er + ei * ei);
+        const double gr = er * scale, gi = -ei * scale;  // 1 / d_j
+        double* ar = w.block_real.data() + (j * K + m) * stride;
+        double* ai = w.block_imag.data() + (j * K + m) * stride;
+#ifdef CGAL_HEAT_DIFFUSION_VECTOR_EXTENSIONS
+        // lanes_per_pass block columns at a time, summed up in registers over the factor
+        // column and written once (1.1 times faster on armadillo at 416k than the loops below)
+        constexpr std::size_t V = lanes_per_pass / 4;
+        for(std::size_t s = 0; s < stride; s += lanes_per_pass)
         {
-          const double er = w.diagonal_real[j * K + m], ei = w.diagonal_imag[j * K + m];
-          const double scale = 1. / (er * er + ei * ei);
-          const double gr = er * scale, gi = -ei * scale;  // 1 / d_j
-          double* ar = w.block_real.data() + (j * K + m) * c;
-          double* ai = w.block_imag.data() + (j * K + m) * c;
-          for(std::size_t s = 0; s < c; ++s)
+          Four_doubles xr[V], xi[V], yr, yi;
+          for(std::size_t v = 0; v < V; ++v)
+            if(zero)
+              xr[v] = xi[v] = Four_doubles{0., 0., 0., 0.};
+            else
+            {
+              load_four(yr, ar + s + 4 * v);
+              load_four(yi, ai + s + 4 * v);
+              xr[v] = gr * yr - gi * yi;
+              xi[v] = gr * yi + gi * yr;
+            }
+          for(std::size_t q = q0; q < q1; ++q)
+          {
+            const std::size_t i = std::size_t(w.factor_row[q]);
+            const double lr = w.factor_real[q * K + m], li = w.factor_imag[q * K + m];
+            const double* br = w.block_real.data() + (i * K + m) * stride + s;
+            const double* bi = w.block_imag.data() + (i * K + m) * stride + s;
+            for(std::size_t v = 0; v < V; ++v)
+            {
+              load_four(yr, br + 4 * v);
+              load_four(yi, bi + 4 * v);
+              xr[v] -= lr * yr - li * yi;
+              xi[v] -= lr * yi + li * yr;
+            }
+          }
+          for(std::size_t v = 0; v < V; ++v)
+          {
+            store_four(ar + s + 4 * v, xr[v]);
+            store_four(ai + s + 4 * v, xi[v]);
+          }
+        }
+#else
+        if(zero)
+        {
+          std::fill_n(ar, stride, 0.);
+          std::fill_n(ai, stride, 0.);
+        }
+        else
+          for(std::size_t s = 0; s < stride; ++s)
           {
             const double vr = ar[s], vi = ai[s];
             ar[s] = gr * vr - gi * vi;
             ai[s] = gr * vi + gi * vr;
           }
-        }
-      }
-      const std::size_t q1 = std::size_t(w.factor_begin[j + 1]);
-      for(std::size_t q = std::size_t(w.factor_begin[j]); q < q1; ++q)
-      {
-        const std::size_t i = std::size_t(w.factor_row[q]);
-        for(std::size_t m = 0; m < K; ++m)
+        for(std::size_t q = q0; q < q1; ++q)
         {
+          const std::size_t i = std::size_t(w.factor_row[q]);
           const double lr = w.factor_real[q * K + m], li = w.factor_imag[q * K + m];
-          double* ar = w.block_real.data() + (j * K + m) * c;
-          double* ai = w.block_imag.data() + (j * K + m) * c;
-          const double* br = w.block_real.data() + (i * K + m) * c;
-          const double* bi = w.block_imag.data() + (i * K + m) * c;
-          for(std::size_t s = 0; s < c; ++s)
+          const double* br = w.block_real.data() + (i * K + m) * stride;
+          const double* bi = w.block_imag.data() + (i * K + m) * stride;
+          for(std::size_t s = 0; s < stride; ++s)
           {
             ar[s] -= lr * br[s] - li * bi[s];
             ai[s] -= lr * bi[s] + li * br[s];
           }
         }
+#endif
       }
       const Eigen::Index a = Eigen::Index(w.permutation[j]);
-      for(std::size_t s = 0; s < c; ++s)
+      for(Eigen::Index s = 0; s < w.columns.cols(); ++s)
       {
         double sum = 0.;
         for(std::size_t m = 0; m < K; ++m)
-          sum += w.block_real[(j * K + m) * c + s];
-        w.columns(a, Eigen::Index(s)) = sum;
+          sum += w.block_real[(j * K + m) * stride + std::size_t(s)];
+        w.columns(a, s) = sum;
       }
       w.row_is_solved[j] = 1;
     }
@@ -770,7 +825,7 @@ private:
     w.ancestors.clear();
     for(; j != -1 && !w.row_is_solved[std::size_t(j)]; j = w.parent[std::size_t(j)])
       w.ancestors.push_back(j);
-    back_substitution(w, std::size_t(w.columns.cols()));
+    back_substitution(w);
   }
 
   // Orders the c sources by the postorder of their rows in the elimination tree
@@ -781,6 +836,7 @@ private:
   static void place_sources(const std::size_t* sources, std::size_t c, Workspace& w)
   {
     constexpr std::size_t K = number_of_poles;
+    const std::size_t stride = w.stride;
     const int p = int(w.patch.size());
     // the postorder of the elimination forest (Eigen's, whose roots hang from a root p)
     w.tree_parent.resize(p);
@@ -806,15 +862,15 @@ private:
         if(w.source_end[std::size_t(j)] == 0)
         {
           w.source_begin[std::size_t(j)] = std::uint32_t(column);
-          std::fill_n(w.block_real.data() + std::size_t(j) * K * c, K * c, 0.);
-          std::fill_n(w.block_imag.data() + std::size_t(j) * K * c, K * c, 0.);
+          std::fill_n(w.block_real.data() + std::size_t(j) * K * stride, K * stride, 0.);
+          std::fill_n(w.block_imag.data() + std::size_t(j) * K * stride, K * stride, 0.);
         }
         w.source_end[std::size_t(j)] = std::uint32_t(column + 1);
       }
       for(std::size_t m = 0; m < K; ++m)
       {
-        w.block_real[(std::size_t(row) * K + m) * c + column] = -poles[m].residue_real;
-        w.block_imag[(std::size_t(row) * K + m) * c + column] = -poles[m].residue_imag;
+        w.block_real[(std::size_t(row) * K + m) * stride + column] = -poles[m].residue_real;
+        w.block_imag[(std::size_t(row) * K + m) * stride + column] = -poles[m].residue_imag;
       }
     }
   }
@@ -833,13 +889,14 @@ private:
     const std::size_t p = w.patch.size(), c = count;
     w.columns.resize(Eigen::Index(p), Eigen::Index(c));
     // (the rows are cleared by place_sources() or where the back substitution reaches them)
-    w.block_real.resize(K * p * c);
-    w.block_imag.resize(K * p * c);
+    w.stride = (c + lanes_per_pass - 1) / lanes_per_pass * lanes_per_pass;
+    w.block_real.resize(K * p * w.stride);
+    w.block_imag.resize(K * p * w.stride);
     w.row_is_solved.assign(p, 0);
     factorise(w);
     // right-hand sides -a_k e_j, then h = sum_k Re((t L + z_k B)^-1 (-a_k e_j))
     place_sources(sources, c, w);
-    forward_substitution(w, c);
+    forward_substitution(w);
     // The heat balance, 1 - 1^T B_P h_s = 1 - sum_k Re(u_k^T D_k^-1 y_ks) (see above),
     // over the rows where the forward solutions y_ks are not zero.
     w.deficits.assign(c, 1.);
@@ -854,8 +911,8 @@ private:
         const double ur = w.heat_forward_real[j * K + m], ui = w.heat_forward_imag[j * K + m];
         const double scale = 1. / (er * er + ei * ei);
         const double gr = (ur * er + ui * ei) * scale, gi = (ui * er - ur * ei) * scale;  // u_j / d_j
-        const double* yr = w.block_real.data() + (j * K + m) * c;
-        const double* yi = w.block_imag.data() + (j * K + m) * c;
+        const double* yr = w.block_real.data() + (j * K + m) * w.stride;
+        const double* yi = w.block_imag.data() + (j * K + m) * w.stride;
         for(std::size_t s = begin; s < end; ++s)
           w.deficits[s] -= gr * yr[s] - gi * yi[s];
       }
