@@ -27,10 +27,11 @@
 #include <utility>
 #include <vector>
 
-// The forward and back substitutions are the largest part of the local kernel's time,
-// and they vectorise. A compiler's default target is the baseline x86-64 (SSE2); with
-// GCC 11 or later on x86-64 Linux (GNU ifunc) they are also compiled for the x86-64-v3 level (AVX2
-// and FMA), and that code is chosen at run time when the processor has it. Define
+// The factorisation and the forward and back substitutions are the largest part of the
+// local kernel's time, and they vectorise. A compiler's default target is the baseline
+// x86-64 (SSE2); with GCC 11 or later on x86-64 Linux (GNU ifunc) they are also compiled
+// for the x86-64-v3 level (AVX2 and FMA), and that code is chosen at run time when the
+// processor has it. Define
 // CGAL_HEAT_DIFFUSION_NO_TARGET_CLONES to compile the baseline alone. (The sanitizer
 // build of the tests uses clang, so it runs the baseline.)
 #if defined(__GNUC__) && !defined(__clang__) && __GNUC__ >= 11 && defined(__x86_64__) && defined(__linux__) && \
@@ -44,11 +45,11 @@ namespace CGAL {
 namespace Heat_diffusion {
 namespace internal {
 
-// The back substitution sums each row up in registers, in vectors of four doubles (GCC's
-// and Clang's vector extensions): one AVX register in the x86-64-v3 clone, two SSE2
-// registers in the baseline code. Other compilers, or CGAL_HEAT_DIFFUSION_NO_VECTOR_EXTENSIONS,
-// get plain loops that update the row in memory for each factor entry, which they can
-// vectorise themselves. (The vectors are passed by reference: by value, they would change
+// Vectors of four doubles (GCC's and Clang's vector extensions): one AVX register in the
+// x86-64-v3 clone, two SSE2 registers in the baseline code. The back substitution sums
+// each row up in them, and the factorisation updates the poles of a row at once. Other
+// compilers, or CGAL_HEAT_DIFFUSION_NO_VECTOR_EXTENSIONS, get plain loops, which they can
+// vectorise themselves, but less well. (The vectors are passed by reference: by value, they would change
 // the calling convention between the baseline code and its clone.)
 #if defined(__GNUC__) && !defined(CGAL_HEAT_DIFFUSION_NO_VECTOR_EXTENSIONS)
 #define CGAL_HEAT_DIFFUSION_VECTOR_EXTENSIONS
@@ -580,18 +581,23 @@ private:
   // Numeric LDL^T of P (t L_P + z_k B_P) P^T for the poles z_k together (they share the
   // symbolic analysis: one traversal), complex symmetric (no conjugation). Entry q of
   // the factor of pole k is factor_real / factor_imag[q * number_of_poles + k].
+  CGAL_HEAT_DIFFUSION_VECTOR_CLONES
   void factorise(Workspace& w) const
   {
     constexpr std::size_t K = number_of_poles;
+    // y's rows hold the poles and unused lanes up to four, so that a row is one vector
+    static_assert(K <= 4, "one vector of four per row of y");
+    constexpr std::size_t Y = 4;
     const int p = int(w.patch.size());
     const std::size_t nnz = std::size_t(w.factor_begin[std::size_t(p)]);
     w.factor_row.resize(nnz);
-    w.factor_real.resize(nnz * K);
-    w.factor_imag.resize(nnz * K);
+    // (and a spare value, read with the last entry's poles by a vector of four)
+    w.factor_real.resize(nnz * K + Y - K);
+    w.factor_imag.resize(nnz * K + Y - K);
     w.diagonal_real.resize(std::size_t(p) * K);
     w.diagonal_imag.resize(std::size_t(p) * K);
-    w.y_real.assign(std::size_t(p) * K, 0.);
-    w.y_imag.assign(std::size_t(p) * K, 0.);
+    w.y_real.assign(std::size_t(p) * Y, 0.);
+    w.y_imag.assign(std::size_t(p) * Y, 0.);
     w.heat_forward_real.resize(std::size_t(p) * K);
     w.heat_forward_imag.resize(std::size_t(p) * K);
     w.pattern.resize(std::size_t(p));
@@ -616,8 +622,8 @@ private:
         const double l = t * w.stiffness_value[std::size_t(q)], b = w.mass_value[std::size_t(q)];
         for(std::size_t m = 0; m < K; ++m)
         {
-          yr[std::size_t(i) * K + m] += l + poles[m].pole_real * b;
-          yi[std::size_t(i) * K + m] += poles[m].pole_imag * b;
+          yr[std::size_t(i) * Y + m] += l + poles[m].pole_real * b;
+          yi[std::size_t(i) * Y + m] += poles[m].pole_imag * b;
         }
         int length = 0;
         for(; w.flag[std::size_t(i)] != k; i = w.parent[std::size_t(i)])
@@ -631,10 +637,10 @@ private:
       // (copies, then clears: one loop doing both is miscompiled by g++ 12 at -O2,
       // whose loop distribution into memcpy / memset loses the imaginary parts)
       std::array<double, K> dr, di;
-      std::copy(yr + std::size_t(k) * K, yr + std::size_t(k + 1) * K, dr.begin());
-      std::copy(yi + std::size_t(k) * K, yi + std::size_t(k + 1) * K, di.begin());
-      std::fill(yr + std::size_t(k) * K, yr + std::size_t(k + 1) * K, 0.);
-      std::fill(yi + std::size_t(k) * K, yi + std::size_t(k + 1) * K, 0.);
+      std::copy(yr + std::size_t(k) * Y, yr + std::size_t(k) * Y + K, dr.begin());
+      std::copy(yi + std::size_t(k) * Y, yi + std::size_t(k) * Y + K, di.begin());
+      std::fill(yr + std::size_t(k) * Y, yr + std::size_t(k) * Y + K, 0.);
+      std::fill(yi + std::size_t(k) * Y, yi + std::size_t(k) * Y + K, 0.);
       double* ur = w.heat_forward_real.data() + std::size_t(k) * K;
       double* ui = w.heat_forward_imag.data() + std::size_t(k) * K;
       std::fill(ur, ur + K, w.patch_heat[std::size_t(a)]);
@@ -643,11 +649,34 @@ private:
       {
         const std::size_t i = std::size_t(w.pattern[std::size_t(top)]);
         std::array<double, K> vr, vi;
-        std::copy(yr + i * K, yr + (i + 1) * K, vr.begin());
-        std::copy(yi + i * K, yi + (i + 1) * K, vi.begin());
-        std::fill(yr + i * K, yr + (i + 1) * K, 0.);
-        std::fill(yi + i * K, yi + (i + 1) * K, 0.);
+        std::copy(yr + i * Y, yr + i * Y + K, vr.begin());
+        std::copy(yi + i * Y, yi + i * Y + K, vi.begin());
+        std::fill(yr + i * Y, yr + i * Y + K, 0.);
+        std::fill(yi + i * Y, yi + i * Y + K, 0.);
         const std::size_t q0 = std::size_t(w.factor_begin[i]), q1 = q0 + std::size_t(w.factor_count[i]);
+#ifdef CGAL_HEAT_DIFFUSION_VECTOR_EXTENSIONS
+        // all poles at once; the lanes past the poles read the next entry, times zero
+        Four_doubles xr{0., 0., 0., 0.}, xi{0., 0., 0., 0.};
+        for(std::size_t m = 0; m < K; ++m)
+        {
+          xr[m] = vr[m];
+          xi[m] = vi[m];
+        }
+        for(std::size_t q = q0; q < q1; ++q)
+        {
+          double* zr = yr + std::size_t(w.factor_row[q]) * Y;
+          double* zi = yi + std::size_t(w.factor_row[q]) * Y;
+          Four_doubles fr, fi, gr, gi;
+          load_four(fr, w.factor_real.data() + q * K);
+          load_four(fi, w.factor_imag.data() + q * K);
+          load_four(gr, zr);
+          load_four(gi, zi);
+          gr -= fr * xr - fi * xi;
+          gi -= fr * xi + fi * xr;
+          store_four(zr, gr);
+          store_four(zi, gi);
+        }
+#else
         for(std::size_t q = q0; q < q1; ++q)
         {
           const std::size_t r = std::size_t(w.factor_row[q]);
@@ -655,10 +684,11 @@ private:
           const double* fi = w.factor_imag.data() + q * K;
           for(std::size_t m = 0; m < K; ++m)
           {
-            yr[r * K + m] -= fr[m] * vr[m] - fi[m] * vi[m];
-            yi[r * K + m] -= fr[m] * vi[m] + fi[m] * vr[m];
+            yr[r * Y + m] -= fr[m] * vr[m] - fi[m] * vi[m];
+            yi[r * Y + m] -= fr[m] * vi[m] + fi[m] * vr[m];
           }
         }
+#endif
         w.factor_row[q1] = k;
         for(std::size_t m = 0; m < K; ++m)
         {
