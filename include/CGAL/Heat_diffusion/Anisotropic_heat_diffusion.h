@@ -26,6 +26,7 @@
 #include <numeric>
 #include <sstream>
 #include <stdexcept>
+#include <utility>
 #include <vector>
 
 namespace CGAL {
@@ -452,10 +453,10 @@ private:
       typename Columns::Workspace kernel_workspace;
     };
     // Memory (1.66M vertices, ~58 entries a column: 96M entries). The columns are
-    // computed in blocks of sources, in parallel within a block, and appended to
-    // large fixed-size chunks; the per-column vectors and the per-thread scratch are
-    // reused from block to block. Blocks are small enough for the progress to move
-    // about every 1 % at that size.
+    // computed in blocks of sources, in parallel within a block, and copied (in
+    // parallel too) to large fixed-size chunks; the per-column vectors and the
+    // per-thread scratch are reused from block to block. Blocks are small enough for
+    // the progress to move about every 1 % at that size.
     // A_t is then written once, in compressed rows (what the diffusion steps read),
     // and the chunks are freed. One small vector per column kept to the end would
     // leave their memory in the allocator's arenas (1.5 GB at that size), and a
@@ -465,10 +466,17 @@ private:
     {
       std::size_t chunk = 0, offset = 0, size = 0;
     };
+    // (new[] leaves the chunks uninitialised: their pages are first written by the
+    // parallel copies, not by one thread filling them with zeros)
+    struct Chunk
+    {
+      std::unique_ptr<Storage_index[]> rows;
+      std::unique_ptr<double[]> values;
+      std::size_t size = 0, capacity = 0;
+    };
     constexpr std::size_t block_size = 16384, chunk_capacity = std::size_t(1) << 22;
     std::vector<Placement> placement(n);
-    std::vector<std::vector<Storage_index> > chunk_rows;
-    std::vector<std::vector<double> > chunk_values;
+    std::vector<Chunk> chunks;
     std::vector<std::vector<std::pair<std::size_t, double> > > columns((std::min)(block_size, n));
     internal::Per_thread_scratch<Scratch> scratches(
         [&] { return Scratch{std::vector<std::size_t>(n, 0), 0, {}, kernel.make_workspace()}; });
@@ -519,23 +527,31 @@ private:
               for(auto& entry : column)
                 entry.second /= sum;
           });
+      // the block's columns one after the other in the last chunk (or a new one)
+      std::size_t block_entries = 0;
+      for(std::size_t position = 0; position < count; ++position)
+        block_entries += columns[position].size();
+      if(chunks.empty() || chunks.back().size + block_entries > chunks.back().capacity)
+      {
+        chunks.emplace_back();
+        chunks.back().capacity = (std::max)(chunk_capacity, block_entries);
+        chunks.back().rows.reset(new Storage_index[chunks.back().capacity]);
+        chunks.back().values.reset(new double[chunks.back().capacity]);
+      }
+      Chunk& chunk = chunks.back();
       for(std::size_t position = 0; position < count; ++position)
       {
-        auto& column = columns[position];
-        if(chunk_rows.empty() || chunk_rows.back().size() + column.size() > chunk_rows.back().capacity())
-        {
-          chunk_rows.emplace_back();
-          chunk_rows.back().reserve((std::max)(chunk_capacity, column.size()));
-          chunk_values.emplace_back();
-          chunk_values.back().reserve((std::max)(chunk_capacity, column.size()));
-        }
-        placement[order[first + position]] = {chunk_rows.size() - 1, chunk_rows.back().size(), column.size()};
-        for(const auto& entry : column)
-        {
-          chunk_rows.back().push_back(Storage_index(entry.first));
-          chunk_values.back().push_back(entry.second);
-        }
+        placement[order[first + position]] = {chunks.size() - 1, chunk.size, columns[position].size()};
+        chunk.size += columns[position].size();
       }
+      internal::parallel_for(count, [&](std::size_t position) {
+        const Placement& p = placement[order[first + position]];
+        for(std::size_t k = 0; k < p.size; ++k)
+        {
+          chunk.rows[p.offset + k] = Storage_index(columns[position][k].first);
+          chunk.values[p.offset + k] = columns[position][k].second;
+        }
+      });
       progress.report(double(first + count) / double(n), "the construction of the heat regions");
     }
     std::vector<std::vector<std::pair<std::size_t, double> > >().swap(columns);
@@ -556,28 +572,45 @@ private:
       throw std::length_error("CGAL::Heat_diffusion::Anisotropic_heat_diffusion: A_t has more entries than its "
                               "index type holds; use a smaller time t");
 
-    // Compressed rows: count the entries of each row, then scatter the columns in
-    // increasing j, which leaves every row sorted.
+    // Compressed rows, in parallel over `parts` ranges of columns: count the entries of
+    // each row in each range, then scatter each range's columns in increasing j, from
+    // where the ranges before it end in each row: every row is sorted, whatever the
+    // number of ranges.
     row_major_ = Row_major(Eigen::Index(n), Eigen::Index(n));
     row_major_.resizeNonZeros(Eigen::Index(total));
     Storage_index* outer = row_major_.outerIndexPtr();
-    std::fill(outer, outer + n + 1, Storage_index(0));
-    for(std::size_t c = 0; c < chunk_rows.size(); ++c)
-      for(Storage_index i : chunk_rows[c])
-        ++outer[i + 1];
-    for(std::size_t i = 0; i < n; ++i)
-      outer[i + 1] += outer[i];
-    std::vector<Storage_index> next(outer, outer + n);
-    for(std::size_t j = 0; j < n; ++j)
-    {
-      const Placement& p = placement[j];
-      for(std::size_t k = p.offset; k < p.offset + p.size; ++k)
+    const std::size_t parts = (std::min)(n, internal::number_of_parallel_parts());
+    std::vector<std::vector<Storage_index> > next(parts);  // per range and row
+    auto columns_of = [&](std::size_t part) { return std::make_pair(n * part / parts, n * (part + 1) / parts); };
+    internal::parallel_for(parts, [&](std::size_t part) {
+      next[part].assign(n, 0);
+      for(std::size_t j = columns_of(part).first; j < columns_of(part).second; ++j)
       {
-        const Storage_index position = next[std::size_t(chunk_rows[p.chunk][k])]++;
-        row_major_.innerIndexPtr()[position] = Storage_index(j);
-        row_major_.valuePtr()[position] = chunk_values[p.chunk][k];
+        const Placement& p = placement[j];
+        for(std::size_t k = p.offset; k < p.offset + p.size; ++k)
+          ++next[part][std::size_t(chunks[p.chunk].rows[k])];
       }
+    }, 1);
+    Storage_index position = 0;
+    for(std::size_t i = 0; i < n; ++i)
+    {
+      outer[i] = position;
+      for(std::size_t part = 0; part < parts; ++part)
+        position += std::exchange(next[part][i], position);
     }
+    outer[n] = position;
+    internal::parallel_for(parts, [&](std::size_t part) {
+      for(std::size_t j = columns_of(part).first; j < columns_of(part).second; ++j)
+      {
+        const Placement& p = placement[j];
+        for(std::size_t k = p.offset; k < p.offset + p.size; ++k)
+        {
+          const Storage_index target = next[part][std::size_t(chunks[p.chunk].rows[k])]++;
+          row_major_.innerIndexPtr()[target] = Storage_index(j);
+          row_major_.valuePtr()[target] = chunks[p.chunk].values[k];
+        }
+      }
+    }, 1);
   }
 
   // operator_matrix(), made from the rows on the first call (thread-safe), shared by copies.

@@ -35,7 +35,8 @@
 // alone. (The sanitizer build of the tests uses clang, so it runs the baseline.)
 #if defined(__GNUC__) && !defined(__clang__) && __GNUC__ >= 11 && defined(__x86_64__) && defined(__linux__) && \
     !defined(CGAL_HEAT_DIFFUSION_NO_TARGET_CLONES)
-#define CGAL_HEAT_DIFFUSION_VECTOR_CLONES __attribute__((target_clones("arch=x86-64-v3", "default")))
+#define CGAL_HEAT_DIFFUSION_VECTOR_CLONES \
+  __attribute__((target_clones("arch=x86-64-v4", "arch=x86-64-v3", "default")))
 #define CGAL_HEAT_DIFFUSION_HAS_VECTOR_CLONES
 #else
 #define CGAL_HEAT_DIFFUSION_VECTOR_CLONES
@@ -70,6 +71,28 @@ inline bool four_doubles_fit_a_register()
 #else
   static const bool x86_64_v3 = __builtin_cpu_supports("avx2") && __builtin_cpu_supports("fma");
   return x86_64_v3;
+#endif
+}
+
+typedef double Eight_doubles __attribute__((vector_size(8 * sizeof(double))));
+
+inline void load_eight(Eight_doubles& x, const double* p) { std::memcpy(&x, p, sizeof x); }
+inline void store_eight(double* p, const Eight_doubles& x) { std::memcpy(p, &x, sizeof x); }
+
+// Whether vectors of eight doubles fit a register: always when compiled for AVX-512,
+// else when the processor runs the x86-64-v4 clone. (Where this would disagree with
+// the choice of the clone, the code stays right, only slower.)
+inline bool eight_doubles_fit_a_register()
+{
+#if defined(__AVX512F__)
+  return true;
+#elif defined(CGAL_HEAT_DIFFUSION_HAS_VECTOR_CLONES)
+  static const bool x86_64_v4 = four_doubles_fit_a_register() && __builtin_cpu_supports("avx512f") &&
+                                __builtin_cpu_supports("avx512vl") && __builtin_cpu_supports("avx512bw") &&
+                                __builtin_cpu_supports("avx512dq") && __builtin_cpu_supports("avx512cd");
+  return x86_64_v4;
+#else
+  return false;
 #endif
 }
 #endif
@@ -259,6 +282,7 @@ public:
     std::vector<int> permutation, inverse_permutation;  // new -> old, old -> new
     std::vector<int> parent, factor_begin, factor_count, flag, pattern, factor_row;
     std::vector<double> factor_real, factor_imag, diagonal_real, diagonal_imag, y_real, y_imag;
+    std::vector<double> diagonal_scale;  // 1 / |d|^2
     Eigen::SparseMatrix<double, Eigen::ColMajor, int> ordering_pattern;
     // the right-hand sides, then the solutions: p rows of (pole, source), split complex;
     // a row holds `stride` block columns, the sources rounded up to lanes_per_pass (the
@@ -609,15 +633,16 @@ private:
     const int p = int(w.patch.size());
     const std::size_t nnz = std::size_t(w.factor_begin[std::size_t(p)]);
     w.factor_row.resize(nnz);
-    // (and a spare value, read with the last entry's poles by a vector of four)
+    // (and spare values, read with the last entry's or row's poles by a vector of four)
     w.factor_real.resize(nnz * K + Y - K);
     w.factor_imag.resize(nnz * K + Y - K);
-    w.diagonal_real.resize(std::size_t(p) * K);
-    w.diagonal_imag.resize(std::size_t(p) * K);
+    w.diagonal_real.resize(std::size_t(p) * K + Y - K);
+    w.diagonal_imag.resize(std::size_t(p) * K + Y - K);
+    w.diagonal_scale.resize(std::size_t(p) * K + Y - K);
     w.y_real.assign(std::size_t(p) * Y, 0.);
     w.y_imag.assign(std::size_t(p) * Y, 0.);
-    w.heat_forward_real.resize(std::size_t(p) * K);
-    w.heat_forward_imag.resize(std::size_t(p) * K);
+    w.heat_forward_real.resize(std::size_t(p) * K + Y - K);
+    w.heat_forward_imag.resize(std::size_t(p) * K + Y - K);
     w.pattern.resize(std::size_t(p));
     std::fill(w.factor_count.begin(), w.factor_count.end(), 0);
     std::fill(w.flag.begin(), w.flag.end(), -1);  // no stale marks of the symbolic analysis
@@ -663,24 +688,27 @@ private:
       double* ui = w.heat_forward_imag.data() + std::size_t(k) * K;
       std::fill(ur, ur + K, w.patch_heat[std::size_t(a)]);
       std::fill(ui, ui + K, 0.);
-      for(; top < p; ++top)
-      {
-        const std::size_t i = std::size_t(w.pattern[std::size_t(top)]);
-        std::array<double, K> vr, vi;
-        std::copy(yr + i * Y, yr + i * Y + K, vr.begin());
-        std::copy(yi + i * Y, yi + i * Y + K, vi.begin());
-        std::fill(yr + i * Y, yr + i * Y + K, 0.);
-        std::fill(yi + i * Y, yi + i * Y + K, 0.);
-        const std::size_t q0 = std::size_t(w.factor_begin[i]), q1 = q0 + std::size_t(w.factor_count[i]);
 #ifdef CGAL_HEAT_DIFFUSION_VECTOR_EXTENSIONS
-        // all poles at once; the lanes past the poles read the next entry, times zero
-        Four_doubles xr{0., 0., 0., 0.}, xi{0., 0., 0., 0.};
+      if(vectors)
+      {
+        // all poles at once, in vectors of four: the lanes past the poles are zeros in
+        // y's rows, and read the next entry or a spare value elsewhere (and are dropped)
+        Four_doubles dkr{0., 0., 0., 0.}, dki{0., 0., 0., 0.}, ukr, uki{0., 0., 0., 0.};
         for(std::size_t m = 0; m < K; ++m)
         {
-          xr[m] = vr[m];
-          xi[m] = vi[m];
+          dkr[m] = dr[m];
+          dki[m] = di[m];
         }
-        if(vectors)
+        ukr = Four_doubles{1., 1., 1., 1.} * w.patch_heat[std::size_t(a)];
+        for(; top < p; ++top)
+        {
+          const std::size_t i = std::size_t(w.pattern[std::size_t(top)]);
+          Four_doubles xr, xi;
+          load_four(xr, yr + i * Y);
+          load_four(xi, yi + i * Y);
+          std::fill(yr + i * Y, yr + i * Y + Y, 0.);
+          std::fill(yi + i * Y, yi + i * Y + Y, 0.);
+          const std::size_t q0 = std::size_t(w.factor_begin[i]), q1 = q0 + std::size_t(w.factor_count[i]);
           for(std::size_t q = q0; q < q1; ++q)
           {
             double* zr = yr + std::size_t(w.factor_row[q]) * Y;
@@ -695,8 +723,42 @@ private:
             store_four(zr, gr);
             store_four(zi, gi);
           }
-        else
+          w.factor_row[q1] = k;
+          // l_ki = y_i / d_i
+          Four_doubles er, ei, scale, uir, uii;
+          load_four(er, w.diagonal_real.data() + i * K);
+          load_four(ei, w.diagonal_imag.data() + i * K);
+          load_four(scale, w.diagonal_scale.data() + i * K);
+          const Four_doubles lr = (xr * er + xi * ei) * scale, li = (xi * er - xr * ei) * scale;
+          dkr -= lr * xr - li * xi;
+          dki -= lr * xi + li * xr;
+          std::memcpy(w.factor_real.data() + q1 * K, &lr, K * sizeof(double));
+          std::memcpy(w.factor_imag.data() + q1 * K, &li, K * sizeof(double));
+          load_four(uir, w.heat_forward_real.data() + i * K);
+          load_four(uii, w.heat_forward_imag.data() + i * K);
+          ukr -= lr * uir - li * uii;
+          uki -= lr * uii + li * uir;
+          ++w.factor_count[i];
+        }
+        for(std::size_t m = 0; m < K; ++m)
+        {
+          dr[m] = dkr[m];
+          di[m] = dki[m];
+          ur[m] = ukr[m];
+          ui[m] = uki[m];
+        }
+      }
+      else
 #endif
+        for(; top < p; ++top)
+        {
+          const std::size_t i = std::size_t(w.pattern[std::size_t(top)]);
+          std::array<double, K> vr, vi;
+          std::copy(yr + i * Y, yr + i * Y + K, vr.begin());
+          std::copy(yi + i * Y, yi + i * Y + K, vi.begin());
+          std::fill(yr + i * Y, yr + i * Y + K, 0.);
+          std::fill(yi + i * Y, yi + i * Y + K, 0.);
+          const std::size_t q0 = std::size_t(w.factor_begin[i]), q1 = q0 + std::size_t(w.factor_count[i]);
           for(std::size_t q = q0; q < q1; ++q)
           {
             const std::size_t r = std::size_t(w.factor_row[q]);
@@ -708,29 +770,30 @@ private:
               yi[r * Y + m] -= fr[m] * vi[m] + fi[m] * vr[m];
             }
           }
-        w.factor_row[q1] = k;
-        for(std::size_t m = 0; m < K; ++m)
-        {
-          // l_ki = y_i / d_i
-          const double er = w.diagonal_real[i * K + m], ei = w.diagonal_imag[i * K + m];
-          const double scale = 1. / (er * er + ei * ei);
-          const double lr = (vr[m] * er + vi[m] * ei) * scale, li = (vi[m] * er - vr[m] * ei) * scale;
-          dr[m] -= lr * vr[m] - li * vi[m];
-          di[m] -= lr * vi[m] + li * vr[m];
-          w.factor_real[q1 * K + m] = lr;
-          w.factor_imag[q1 * K + m] = li;
-          const double uir = w.heat_forward_real[i * K + m], uii = w.heat_forward_imag[i * K + m];
-          ur[m] -= lr * uir - li * uii;
-          ui[m] -= lr * uii + li * uir;
+          w.factor_row[q1] = k;
+          for(std::size_t m = 0; m < K; ++m)
+          {
+            // l_ki = y_i / d_i
+            const double er = w.diagonal_real[i * K + m], ei = w.diagonal_imag[i * K + m];
+            const double scale = w.diagonal_scale[i * K + m];
+            const double lr = (vr[m] * er + vi[m] * ei) * scale, li = (vi[m] * er - vr[m] * ei) * scale;
+            dr[m] -= lr * vr[m] - li * vi[m];
+            di[m] -= lr * vi[m] + li * vr[m];
+            w.factor_real[q1 * K + m] = lr;
+            w.factor_imag[q1 * K + m] = li;
+            const double uir = w.heat_forward_real[i * K + m], uii = w.heat_forward_imag[i * K + m];
+            ur[m] -= lr * uir - li * uii;
+            ui[m] -= lr * uii + li * uir;
+          }
+          ++w.factor_count[i];
         }
-        ++w.factor_count[i];
-      }
       for(std::size_t m = 0; m < K; ++m)
       {
         if(!(dr[m] * dr[m] + di[m] * di[m] > 0) || !std::isfinite(dr[m]) || !std::isfinite(di[m]))
           throw std::runtime_error("CGAL::Heat_diffusion: the factorisation of a local heat kernel matrix failed");
         w.diagonal_real[std::size_t(k) * K + m] = dr[m];
         w.diagonal_imag[std::size_t(k) * K + m] = di[m];
+        w.diagonal_scale[std::size_t(k) * K + m] = 1. / (dr[m] * dr[m] + di[m] * di[m]);
       }
     }
   }
@@ -780,7 +843,7 @@ private:
     constexpr std::size_t K = number_of_poles;
     const std::size_t stride = w.stride;
 #ifdef CGAL_HEAT_DIFFUSION_VECTOR_EXTENSIONS
-    const bool vectors = four_doubles_fit_a_register();
+    const bool vectors = four_doubles_fit_a_register(), eights = eight_doubles_fit_a_register();
 #endif
     for(std::size_t position = w.ancestors.size(); position-- > 0;)
     {
@@ -790,7 +853,7 @@ private:
       for(std::size_t m = 0; m < K; ++m)
       {
         const double er = w.diagonal_real[j * K + m], ei = w.diagonal_imag[j * K + m];
-        const double scale = 1. / (er * er + ei * ei);
+        const double scale = w.diagonal_scale[j * K + m];
         const double gr = er * scale, gi = -ei * scale;  // 1 / d_j
         double* ar = w.block_real.data() + (j * K + m) * stride;
         double* ai = w.block_imag.data() + (j * K + m) * stride;
@@ -798,7 +861,33 @@ private:
         // lanes_per_pass block columns at a time, summed up in registers over the factor
         // column and written once (1.1 times faster on armadillo at 416k than the loops below)
         constexpr std::size_t V = lanes_per_pass / 4;
-        if(vectors)
+        static_assert(lanes_per_pass == 8, "one vector of eight per pass");
+        if(eights)
+          for(std::size_t s = 0; s < stride; s += lanes_per_pass)
+          {
+            Eight_doubles xr, xi, yr, yi;
+            if(zero)
+              xr = xi = Eight_doubles{0., 0., 0., 0., 0., 0., 0., 0.};
+            else
+            {
+              load_eight(yr, ar + s);
+              load_eight(yi, ai + s);
+              xr = gr * yr - gi * yi;
+              xi = gr * yi + gi * yr;
+            }
+            for(std::size_t q = q0; q < q1; ++q)
+            {
+              const std::size_t i = std::size_t(w.factor_row[q]);
+              const double lr = w.factor_real[q * K + m], li = w.factor_imag[q * K + m];
+              load_eight(yr, w.block_real.data() + (i * K + m) * stride + s);
+              load_eight(yi, w.block_imag.data() + (i * K + m) * stride + s);
+              xr -= lr * yr - li * yi;
+              xi -= lr * yi + li * yr;
+            }
+            store_eight(ar + s, xr);
+            store_eight(ai + s, xi);
+          }
+        else if(vectors)
           for(std::size_t s = 0; s < stride; s += lanes_per_pass)
           {
             Four_doubles xr[V], xi[V], yr, yi;
@@ -964,7 +1053,7 @@ private:
       {
         const double er = w.diagonal_real[j * K + m], ei = w.diagonal_imag[j * K + m];
         const double ur = w.heat_forward_real[j * K + m], ui = w.heat_forward_imag[j * K + m];
-        const double scale = 1. / (er * er + ei * ei);
+        const double scale = w.diagonal_scale[j * K + m];
         const double gr = (ur * er + ui * ei) * scale, gi = (ui * er - ur * ei) * scale;  // u_j / d_j
         const double* yr = w.block_real.data() + (j * K + m) * w.stride;
         const double* yi = w.block_imag.data() + (j * K + m) * w.stride;

@@ -4,12 +4,14 @@
 #ifndef CGAL_HEAT_DIFFUSION_INTERNAL_PARALLEL_FOR_H
 #define CGAL_HEAT_DIFFUSION_INTERNAL_PARALLEL_FOR_H
 
+#include <algorithm>
 #include <cstddef>
 
 #ifdef CGAL_LINKED_WITH_TBB
 #include <tbb/blocked_range.h>
 #include <tbb/enumerable_thread_specific.h>
 #include <tbb/parallel_for.h>
+#include <tbb/task_arena.h>
 #endif
 
 namespace CGAL {
@@ -20,10 +22,10 @@ namespace internal {
 // callers write to disjoint slots only, so the sequential and the parallel runs
 // give bit-identical results.
 template <typename Function>
-void parallel_for(std::size_t n, const Function& f)
+void parallel_for(std::size_t n, const Function& f, std::size_t grain_size = 1024)
 {
 #ifdef CGAL_LINKED_WITH_TBB
-  tbb::parallel_for(tbb::blocked_range<std::size_t>(0, n, 1024),
+  tbb::parallel_for(tbb::blocked_range<std::size_t>(0, n, grain_size),
                     [&](const tbb::blocked_range<std::size_t>& range) {
                       for(std::size_t i = range.begin(); i != range.end(); ++i)
                         f(i);
@@ -37,6 +39,17 @@ void parallel_for(std::size_t n, const Function& f)
 // One scratch object per thread (e.g. the marks of a breadth-first search), made by
 // make_scratch() on a thread's first use and kept across calls of
 // parallel_for_with_scratch(), so that work split into blocks allocates it once.
+// How many parts to split work into that is too fine-grained to be split finely: one
+// per thread, up to 8 (without TBB: 1).
+inline std::size_t number_of_parallel_parts()
+{
+#ifdef CGAL_LINKED_WITH_TBB
+  return (std::min)(std::size_t(8), std::size_t((std::max)(1, tbb::this_task_arena::max_concurrency())));
+#else
+  return 1;
+#endif
+}
+
 template <typename Scratch>
 class Per_thread_scratch
 {
