@@ -240,9 +240,11 @@ enum class Local_kernel_mass { consistent, lumped };
 // the postorder of their rows, the sources below a row are consecutive block columns,
 // and each row updates only those (a third of the full block's work on armadillo at
 // t = 1). The back substitution of a row needs only its ancestors: value() solves a
-// row, and the ancestors not solved yet, when it is first read (for all the cluster's
-// columns at once); on armadillo at t = 1 that is 64 % of the rows, late in the
-// elimination order. The heat balance needs no column in full: with
+// row, and the ancestors not solved yet, when it is first read, in the lanes_per_pass
+// block columns of the source's pass (the sources next to each other in the postorder).
+// On armadillo subdivided to 104k vertices at t = 1 a pass solves 36 % of the rows (65 %
+// of the factor's entries of the rows solved for all the columns at once, which are 63 %
+// of the rows), late in the elimination order. The heat balance needs no column in full: with
 // M_k = L_k D_k L_k^T (complex symmetric), 1^T B_P h_s = sum_k Re(u_k^T D_k^-1 y_ks),
 // where u_k = L_k^-1 B_P 1 is computed with the factor and y_ks = L_k^-1 (-a_k e_s) is
 // the forward solution.
@@ -297,8 +299,10 @@ public:
     std::vector<std::uint32_t> source_begin, source_end;
     Eigen::VectorXi tree_parent, postorder;  // (place_sources())
     std::vector<std::pair<int, std::uint32_t> > source_rank;
-    std::vector<unsigned char> row_is_solved;   // by the back substitution
-    std::vector<int> ancestors;                 // the rows value() solves next
+    // by the back substitution, per pass of lanes_per_pass block columns: pass * p + row
+    std::vector<unsigned char> row_is_solved;
+    std::vector<int> ancestors;  // the rows value() solves next, for one pass
+    bool solve_by_pass = false;  // (or all the passes at once)
     std::vector<double> heat_forward_real, heat_forward_imag;  // L_k^-1 B_P 1, rows of poles
 
     // the last cluster, and the kernel that computed it
@@ -428,9 +432,10 @@ public:
     if(v.stamp[i] != v.generation || v.local[i] == not_in_patch)
       return 0.;
     const int row = v.inverse_permutation[v.local[i]];
-    if(!v.row_is_solved[std::size_t(row)])
-      solve_row(v, row);
-    return v.columns(Eigen::Index(v.local[i]), Eigen::Index(v.block_column[v.source_position]));
+    const std::size_t column = v.block_column[v.source_position], pass = column / lanes_per_pass;
+    if(!v.row_is_solved[pass * v.patch.size() + std::size_t(row)])
+      solve_row(v, row, pass);
+    return v.columns(Eigen::Index(v.local[i]), Eigen::Index(column));
   }
 
   // The patch of the last column (global indices).
@@ -613,8 +618,8 @@ private:
   }
 
   static constexpr std::size_t number_of_poles = 3;  // exponential_poles().size()
-  // The block columns the back substitution sums up in registers at a time (a multiple
-  // of 4; 16 was slower), and the multiple to which a block row is rounded up.
+  // The block columns that the back substitution solves together, a pass (summed up in
+  // registers; 16 was slower), and the multiple to which a block row is rounded up.
   static constexpr std::size_t lanes_per_pass = 8;
 
   // Numeric LDL^T of P (t L_P + z_k B_P) P^T for the poles z_k together (they share the
@@ -834,16 +839,17 @@ private:
   }
 
   // Diagonal scaling and back substitution X_k <- L_k^-T D_k^-1 X_k of the rows listed
-  // in w.ancestors, from the last to the first: each needs its rows in the pattern of its
-  // factor column, which are among its ancestors in the elimination tree and so already
-  // solved. Then the cluster's columns on those rows: sum_k Re X_k.
+  // in w.ancestors, from the last to the first, in the block columns of the passes
+  // [first_pass, last_pass): each row needs its rows in the pattern of its factor column,
+  // which are among its ancestors in the elimination tree and so already solved in those
+  // passes. Then the passes' columns of the cluster on those rows: sum_k Re X_k.
   CGAL_HEAT_DIFFUSION_VECTOR_CLONES
-  static void back_substitution(Workspace& w)
+  static void back_substitution(Workspace& w, std::size_t first_pass, std::size_t last_pass)
   {
-    constexpr std::size_t K = number_of_poles;
-    const std::size_t stride = w.stride;
+    constexpr std::size_t K = number_of_poles, S = lanes_per_pass;
+    const std::size_t stride = w.stride, p = w.patch.size();
 #ifdef CGAL_HEAT_DIFFUSION_VECTOR_EXTENSIONS
-    const bool vectors = four_doubles_fit_a_register(), eights = eight_doubles_fit_a_register();
+    const bool fours = four_doubles_fit_a_register(), eights = eight_doubles_fit_a_register();
 #endif
     for(std::size_t position = w.ancestors.size(); position-- > 0;)
     {
@@ -855,23 +861,28 @@ private:
         const double er = w.diagonal_real[j * K + m], ei = w.diagonal_imag[j * K + m];
         const double scale = w.diagonal_scale[j * K + m];
         const double gr = er * scale, gi = -ei * scale;  // 1 / d_j
-        double* ar = w.block_real.data() + (j * K + m) * stride;
-        double* ai = w.block_imag.data() + (j * K + m) * stride;
+        // the passes in row j, and in row i
+        double* ar = w.block_real.data() + (j * K + m) * stride + first_pass * S;
+        double* ai = w.block_imag.data() + (j * K + m) * stride + first_pass * S;
+        auto pass_of = [&](const std::vector<double>& block, std::size_t i) {
+          return block.data() + (i * K + m) * stride + first_pass * S;
+        };
+        const std::size_t lanes = (last_pass - first_pass) * S;
 #ifdef CGAL_HEAT_DIFFUSION_VECTOR_EXTENSIONS
-        // lanes_per_pass block columns at a time, summed up in registers over the factor
-        // column and written once (1.1 times faster on armadillo at 416k than the loops below)
-        constexpr std::size_t V = lanes_per_pass / 4;
-        static_assert(lanes_per_pass == 8, "one vector of eight per pass");
+        // Pass by pass, summed up in registers over the factor column and written once:
+        // one vector of eight, or two of four (1.1 times faster on armadillo at 416k than
+        // the loops below; eight 1.2 times faster than four where they fit a register).
+        static_assert(S == 8, "one vector of eight, or two of four, per pass");
         if(eights)
-          for(std::size_t s = 0; s < stride; s += lanes_per_pass)
+          for(std::size_t o = 0; o < lanes; o += S)
           {
             Eight_doubles xr, xi, yr, yi;
             if(zero)
               xr = xi = Eight_doubles{0., 0., 0., 0., 0., 0., 0., 0.};
             else
             {
-              load_eight(yr, ar + s);
-              load_eight(yi, ai + s);
+              load_eight(yr, ar + o);
+              load_eight(yi, ai + o);
               xr = gr * yr - gi * yi;
               xi = gr * yi + gi * yr;
             }
@@ -879,25 +890,25 @@ private:
             {
               const std::size_t i = std::size_t(w.factor_row[q]);
               const double lr = w.factor_real[q * K + m], li = w.factor_imag[q * K + m];
-              load_eight(yr, w.block_real.data() + (i * K + m) * stride + s);
-              load_eight(yi, w.block_imag.data() + (i * K + m) * stride + s);
+              load_eight(yr, pass_of(w.block_real, i) + o);
+              load_eight(yi, pass_of(w.block_imag, i) + o);
               xr -= lr * yr - li * yi;
               xi -= lr * yi + li * yr;
             }
-            store_eight(ar + s, xr);
-            store_eight(ai + s, xi);
+            store_eight(ar + o, xr);
+            store_eight(ai + o, xi);
           }
-        else if(vectors)
-          for(std::size_t s = 0; s < stride; s += lanes_per_pass)
+        else if(fours)
+          for(std::size_t o = 0; o < lanes; o += S)
           {
-            Four_doubles xr[V], xi[V], yr, yi;
-            for(std::size_t v = 0; v < V; ++v)
+            Four_doubles xr[2], xi[2], yr, yi;
+            for(std::size_t v = 0; v < 2; ++v)
               if(zero)
                 xr[v] = xi[v] = Four_doubles{0., 0., 0., 0.};
               else
               {
-                load_four(yr, ar + s + 4 * v);
-                load_four(yi, ai + s + 4 * v);
+                load_four(yr, ar + o + 4 * v);
+                load_four(yi, ai + o + 4 * v);
                 xr[v] = gr * yr - gi * yi;
                 xi[v] = gr * yi + gi * yr;
               }
@@ -905,9 +916,9 @@ private:
             {
               const std::size_t i = std::size_t(w.factor_row[q]);
               const double lr = w.factor_real[q * K + m], li = w.factor_imag[q * K + m];
-              const double* br = w.block_real.data() + (i * K + m) * stride + s;
-              const double* bi = w.block_imag.data() + (i * K + m) * stride + s;
-              for(std::size_t v = 0; v < V; ++v)
+              const double* br = pass_of(w.block_real, i) + o;
+              const double* bi = pass_of(w.block_imag, i) + o;
+              for(std::size_t v = 0; v < 2; ++v)
               {
                 load_four(yr, br + 4 * v);
                 load_four(yi, bi + 4 * v);
@@ -915,10 +926,10 @@ private:
                 xi[v] -= lr * yi + li * yr;
               }
             }
-            for(std::size_t v = 0; v < V; ++v)
+            for(std::size_t v = 0; v < 2; ++v)
             {
-              store_four(ar + s + 4 * v, xr[v]);
-              store_four(ai + s + 4 * v, xi[v]);
+              store_four(ar + o + 4 * v, xr[v]);
+              store_four(ai + o + 4 * v, xi[v]);
             }
           }
         else
@@ -926,11 +937,11 @@ private:
         {
           if(zero)
           {
-            std::fill_n(ar, stride, 0.);
-            std::fill_n(ai, stride, 0.);
+            std::fill_n(ar, lanes, 0.);
+            std::fill_n(ai, lanes, 0.);
           }
           else
-            for(std::size_t s = 0; s < stride; ++s)
+            for(std::size_t s = 0; s < lanes; ++s)
             {
               const double vr = ar[s], vi = ai[s];
               ar[s] = gr * vr - gi * vi;
@@ -940,9 +951,9 @@ private:
           {
             const std::size_t i = std::size_t(w.factor_row[q]);
             const double lr = w.factor_real[q * K + m], li = w.factor_imag[q * K + m];
-            const double* br = w.block_real.data() + (i * K + m) * stride;
-            const double* bi = w.block_imag.data() + (i * K + m) * stride;
-            for(std::size_t s = 0; s < stride; ++s)
+            const double* br = pass_of(w.block_real, i);
+            const double* bi = pass_of(w.block_imag, i);
+            for(std::size_t s = 0; s < lanes; ++s)
             {
               ar[s] -= lr * br[s] - li * bi[s];
               ai[s] -= lr * bi[s] + li * br[s];
@@ -951,25 +962,33 @@ private:
         }
       }
       const Eigen::Index a = Eigen::Index(w.permutation[j]);
-      for(Eigen::Index s = 0; s < w.columns.cols(); ++s)
+      const std::size_t last = (std::min)(last_pass * S, std::size_t(w.columns.cols()));
+      for(std::size_t s = first_pass * S; s < last; ++s)
       {
         double sum = 0.;
         for(std::size_t m = 0; m < K; ++m)
-          sum += w.block_real[(j * K + m) * stride + std::size_t(s)];
-        w.columns(a, s) = sum;
+          sum += w.block_real[(j * K + m) * stride + s];
+        w.columns(a, Eigen::Index(s)) = sum;
       }
-      w.row_is_solved[j] = 1;
+      for(std::size_t pass = first_pass; pass < last_pass; ++pass)
+        w.row_is_solved[pass * p + j] = 1;
     }
   }
 
-  // Solves row j of the factorised system (permuted order) and the rows it needs: its
-  // ancestors not solved yet. (A solved row's ancestors are all solved.)
-  static void solve_row(Workspace& w, int j)
+  // Solves row j of the factorised system (permuted order) in the block columns of
+  // `pass`, and the rows it needs there: its ancestors not solved yet in that pass. (A
+  // solved row's ancestors are all solved.)
+  static void solve_row(Workspace& w, int j, std::size_t pass)
   {
+    const unsigned char* solved = w.row_is_solved.data() + pass * w.patch.size();
     w.ancestors.clear();
-    for(; j != -1 && !w.row_is_solved[std::size_t(j)]; j = w.parent[std::size_t(j)])
+    for(; j != -1 && !solved[std::size_t(j)]; j = w.parent[std::size_t(j)])
       w.ancestors.push_back(j);
-    back_substitution(w);
+    // (the plain loops solve all the passes at once: they are faster over whole rows)
+    if(w.solve_by_pass)
+      back_substitution(w, pass, pass + 1);
+    else
+      back_substitution(w, 0, w.stride / lanes_per_pass);
   }
 
   // Orders the c sources by the postorder of their rows in the elimination tree
@@ -1036,7 +1055,10 @@ private:
     w.stride = (c + lanes_per_pass - 1) / lanes_per_pass * lanes_per_pass;
     w.block_real.resize(K * p * w.stride);
     w.block_imag.resize(K * p * w.stride);
-    w.row_is_solved.assign(p, 0);
+    w.row_is_solved.assign(w.stride / lanes_per_pass * p, 0);
+#ifdef CGAL_HEAT_DIFFUSION_VECTOR_EXTENSIONS
+    w.solve_by_pass = four_doubles_fit_a_register();
+#endif
     factorise(w);
     // right-hand sides -a_k e_j, then h = sum_k Re((t L + z_k B)^-1 (-a_k e_j))
     place_sources(sources, c, w);
