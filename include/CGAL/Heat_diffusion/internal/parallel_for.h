@@ -18,9 +18,9 @@ namespace CGAL {
 namespace Heat_diffusion {
 namespace internal {
 
-// Calls f(i) for i in [0, n), in parallel when CGAL is linked with TBB. The
-// callers write to disjoint slots only, so the sequential and the parallel runs
-// give bit-identical results.
+// Calls f(i) for i in [0, n), in parallel when CGAL is linked with TBB, in ranges of
+// at least `grain_size` items. The callers write to disjoint slots only, so the
+// sequential and the parallel runs give bit-identical results.
 template <typename Function>
 void parallel_for(std::size_t n, const Function& f, std::size_t grain_size = 1024)
 {
@@ -36,11 +36,8 @@ void parallel_for(std::size_t n, const Function& f, std::size_t grain_size = 102
 #endif
 }
 
-// One scratch object per thread (e.g. the marks of a breadth-first search), made by
-// make_scratch() on a thread's first use and kept across calls of
-// parallel_for_with_scratch(), so that work split into blocks allocates it once.
-// How many parts to split work into that is too fine-grained to be split finely: one
-// per thread, up to 8 (without TBB: 1).
+// The number of parts for work whose parts each need memory of the input's size (so
+// that it is not split item by item): one per thread, up to 8 (1 without TBB).
 inline std::size_t number_of_parallel_parts()
 {
 #ifdef CGAL_LINKED_WITH_TBB
@@ -50,6 +47,9 @@ inline std::size_t number_of_parallel_parts()
 #endif
 }
 
+// One scratch object per thread (e.g. the marks of a breadth-first search), made by
+// make_scratch() on a thread's first use and kept across calls of
+// parallel_for_with_scratch(), so that work split into blocks allocates it once.
 template <typename Scratch>
 class Per_thread_scratch
 {
