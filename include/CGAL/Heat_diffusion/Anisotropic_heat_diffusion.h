@@ -417,7 +417,7 @@ private:
     auto build = [&](auto columns) {
       for(Eigen::Index k = 0; k < columns.psi.cols(); ++k)
         columns.psi.col(k) *= std::exp(-0.5 * kernel_->decay_rate(std::size_t(k)) * t);
-      build_from_columns(columns, order, progress);
+      build_from_columns(columns, order, std::vector<std::size_t>(), progress);
     };
     if(kernel_->coarse_eigenvectors().size() > 0)
       build(Coarse_spectral_columns{kernel_->coarse_eigenvectors(), &kernel_->coarse_prolongation(), kernel_,
@@ -432,15 +432,18 @@ private:
     const internal::Local_heat_kernel kernel(ncc_->indexed_mesh(), operators.stiffness, operators.mass, t);
     // Sources cluster after cluster: consecutive sources share their patch and its
     // factorisations.
-    build_from_columns(Local_columns{kernel}, kernel.source_order(), progress);
+    build_from_columns(Local_columns{kernel}, kernel.source_order(), kernel.cluster_begin(), progress);
   }
 
   // Grows the heat region of every source j and fills column j of A_t. `columns`
   // evaluates h_t(j, i) once prepare(j) has run; `order` is the order of the sources
-  // (results do not depend on it: each source writes its own column).
+  // (results do not depend on it: each source writes its own column). `group_begin`, if
+  // not empty, is where groups of sources that share work start in `order`, with the end
+  // as last entry (the local kernel's clusters): a thread takes a group whole.
   // `progress` is told after each block of sources.
   template <typename Columns>
   void build_from_columns(const Columns& kernel, const std::vector<std::size_t>& order,
+                          const std::vector<std::size_t>& group_begin,
                           const internal::Progress& progress)
   {
     const internal::Indexed_mesh& mesh = ncc_->indexed_mesh();
@@ -481,12 +484,21 @@ private:
     internal::Per_thread_scratch<Scratch> scratches(
         [&] { return Scratch{std::vector<std::size_t>(n, 0), 0, {}, kernel.make_workspace()}; });
     progress.report(0., "the construction of the heat regions");
-    for(std::size_t first = 0; first < n; first += block_size)
+    std::size_t group = 0;  // the first group of the block
+    for(std::size_t first = 0; first < n;)
     {
-      const std::size_t count = (std::min)(block_size, n - first);
-      internal::parallel_for_with_scratch(
-          count, scratches,
-          [&](std::size_t position, Scratch& s) {
+      // (a block ends with a group, so that no group is split between two blocks)
+      std::size_t last = (std::min)(first + block_size, n), end_group = group;
+      if(!group_begin.empty())
+      {
+        while(group_begin[end_group] < last)
+          ++end_group;
+        last = group_begin[end_group];
+      }
+      const std::size_t count = last - first;
+      if(columns.size() < count)
+        columns.resize(count);
+      auto compute_column = [&](std::size_t position, Scratch& s) {
             const std::size_t j = order[first + position];
             kernel.prepare(j, s.kernel_workspace);
             auto h = [&](std::size_t i) { return kernel(j, i, s.kernel_workspace); };
@@ -526,7 +538,19 @@ private:
             else
               for(auto& entry : column)
                 entry.second /= sum;
-          });
+          };
+      if(group_begin.empty())
+        internal::parallel_for_with_scratch(count, scratches, compute_column);
+      else  // a group at a time
+        internal::parallel_for_with_scratch(
+            end_group - group, scratches,
+            [&](std::size_t g, Scratch& s) {
+              for(std::size_t position = group_begin[group + g] - first; position < group_begin[group + g + 1] - first;
+                  ++position)
+                compute_column(position, s);
+            },
+            1);
+      group = end_group;
       // the block's columns one after the other in the last chunk (or a new one)
       std::size_t block_entries = 0;
       for(std::size_t position = 0; position < count; ++position)
@@ -552,7 +576,8 @@ private:
           chunk.values[p.offset + k] = columns[position][k].second;
         }
       });
-      progress.report(double(first + count) / double(n), "the construction of the heat regions");
+      progress.report(double(last) / double(n), "the construction of the heat regions");
+      first = last;
     }
     std::vector<std::vector<std::pair<std::size_t, double> > >().swap(columns);
 

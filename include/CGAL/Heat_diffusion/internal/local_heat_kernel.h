@@ -370,6 +370,8 @@ public:
   // The sources in the order the kernel works best: its clusters one after the other,
   // so that consecutive sources share their patch factorisations.
   const std::vector<std::size_t>& source_order() const { return cluster_order_; }
+  // Where each cluster starts in source_order(), and its end.
+  const std::vector<std::size_t>& cluster_begin() const { return cluster_begin_; }
   double tolerance() const { return tolerance_; }
 
   Workspace make_workspace() const

@@ -81,10 +81,11 @@ private:
 
 // As parallel_for, calling f(i, scratch) with the scratch object of the thread.
 template <typename Scratch, typename Function>
-void parallel_for_with_scratch(std::size_t n, Per_thread_scratch<Scratch>& scratches, const Function& f)
+void parallel_for_with_scratch(std::size_t n, Per_thread_scratch<Scratch>& scratches, const Function& f,
+                               std::size_t grain_size = 256)
 {
 #ifdef CGAL_LINKED_WITH_TBB
-  tbb::parallel_for(tbb::blocked_range<std::size_t>(0, n, 256),
+  tbb::parallel_for(tbb::blocked_range<std::size_t>(0, n, grain_size),
                     [&](const tbb::blocked_range<std::size_t>& range) {
                       Scratch& scratch = scratches.local();
                       for(std::size_t i = range.begin(); i != range.end(); ++i)
