@@ -499,46 +499,46 @@ private:
       if(columns.size() < count)
         columns.resize(count);
       auto compute_column = [&](std::size_t position, Scratch& s) {
-            const std::size_t j = order[first + position];
-            kernel.prepare(j, s.kernel_workspace);
-            auto h = [&](std::size_t i) { return kernel(j, i, s.kernel_workspace); };
-            ++s.generation;
-            const double peak = h(j);
-            const double tau = kernel.relative ? threshold() * peak : threshold();
-            auto& column = columns[position];
-            column.clear();
-            column.emplace_back(j, peak);
-            s.mark[j] = s.generation;
-            s.queue.assign(1, j);
-            for(std::size_t q = 0; q < s.queue.size() && column.size() < maximum_region_size; ++q)
+        const std::size_t j = order[first + position];
+        kernel.prepare(j, s.kernel_workspace);
+        auto h = [&](std::size_t i) { return kernel(j, i, s.kernel_workspace); };
+        ++s.generation;
+        const double peak = h(j);
+        const double tau = kernel.relative ? threshold() * peak : threshold();
+        auto& column = columns[position];
+        column.clear();
+        column.emplace_back(j, peak);
+        s.mark[j] = s.generation;
+        s.queue.assign(1, j);
+        for(std::size_t q = 0; q < s.queue.size() && column.size() < maximum_region_size; ++q)
+        {
+          const std::size_t i = s.queue[q];
+          for(std::size_t k = mesh.fan_begin[i]; k < mesh.fan_begin[i + 1]; ++k)
+          {
+            const std::size_t u = mesh.fan[k];
+            if(s.mark[u] == s.generation)
+              continue;
+            s.mark[u] = s.generation;
+            const double value = h(u);
+            if(value > tau && column.size() < maximum_region_size)
             {
-              const std::size_t i = s.queue[q];
-              for(std::size_t k = mesh.fan_begin[i]; k < mesh.fan_begin[i + 1]; ++k)
-              {
-                const std::size_t u = mesh.fan[k];
-                if(s.mark[u] == s.generation)
-                  continue;
-                s.mark[u] = s.generation;
-                const double value = h(u);
-                if(value > tau && column.size() < maximum_region_size)
-                {
-                  column.emplace_back(u, value);
-                  s.queue.push_back(u);
-                }
-              }
+              column.emplace_back(u, value);
+              s.queue.push_back(u);
             }
-            // A region whose source value is not positive (possible only for a badly
-            // truncated kernel), or whose total is not finite (a kernel overflowing at an
-            // extreme t), keeps its heat: a column of the identity, never NaN in A_t.
-            double sum = 0;
-            for(const auto& entry : column)
-              sum += entry.second;
-            if(!(column.front().second > 0) || !(sum > 0) || !std::isfinite(sum))
-              column.assign(1, {j, 1.});
-            else
-              for(auto& entry : column)
-                entry.second /= sum;
-          };
+          }
+        }
+        // A region whose source value is not positive (possible only for a badly
+        // truncated kernel), or whose total is not finite (a kernel overflowing at an
+        // extreme t), keeps its heat: a column of the identity, never NaN in A_t.
+        double sum = 0;
+        for(const auto& entry : column)
+          sum += entry.second;
+        if(!(column.front().second > 0) || !(sum > 0) || !std::isfinite(sum))
+          column.assign(1, {j, 1.});
+        else
+          for(auto& entry : column)
+            entry.second /= sum;
+      };
       if(group_begin.empty())
         internal::parallel_for_with_scratch(count, scratches, compute_column);
       else  // a group at a time
