@@ -609,7 +609,8 @@ private:
     auto columns_of = [&](std::size_t part) { return std::make_pair(n * part / parts, n * (part + 1) / parts); };
     internal::parallel_for(parts, [&](std::size_t part) {
       next[part].assign(n, 0);
-      for(std::size_t j = columns_of(part).first; j < columns_of(part).second; ++j)
+      const std::pair<std::size_t, std::size_t> range = columns_of(part);
+      for(std::size_t j = range.first; j < range.second; ++j)
       {
         const Placement& p = placement[j];
         for(std::size_t k = p.offset; k < p.offset + p.size; ++k)
@@ -625,7 +626,8 @@ private:
     }
     outer[n] = position;
     internal::parallel_for(parts, [&](std::size_t part) {
-      for(std::size_t j = columns_of(part).first; j < columns_of(part).second; ++j)
+      const std::pair<std::size_t, std::size_t> range = columns_of(part);
+      for(std::size_t j = range.first; j < range.second; ++j)
       {
         const Placement& p = placement[j];
         for(std::size_t k = p.offset; k < p.offset + p.size; ++k)
