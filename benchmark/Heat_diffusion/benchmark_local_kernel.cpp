@@ -16,11 +16,14 @@
 //          its own.
 //
 // Usage: benchmark_local_kernel [DATA_DIR] [--levels L] [--first-level F] [--no-table-1]
-//                               [--time T] [--sigma S]
+//                               [--time T] [--sigma S] [--repeat R]
 //   L (default 3): Loop subdivision levels of table 2 (3 gives 1.6M vertices: minutes);
-//   F (default 0): the first level of table 2 (L = -1 skips table 2).
-// Wall-clock times of single runs: the eigen solve and the large meshes take seconds
-// to minutes, and the machine may be shared, so compare within a run.
+//   F (default 0): the first level of table 2 (L = -1 skips table 2);
+//   R (default 1): the runs of each kernel per level of table 2, alternating local and
+//                  spectral; with R > 1, a last row per level gives the medians.
+// Wall-clock times: the eigen solve and the large meshes take seconds to minutes, and
+// the machine may be shared, so compare within a run (and repeat the runs of table 2:
+// their ratio moves by several percent from run to run).
 
 #include <CGAL/Exact_predicates_inexact_constructions_kernel.h>
 #include <CGAL/Heat_diffusion/Anisotropic_heat_diffusion.h>
@@ -33,6 +36,7 @@
 #include <sys/wait.h>
 #include <unistd.h>
 
+#include <algorithm>
 #include <chrono>
 #include <cstdio>
 #include <cstdlib>
@@ -62,6 +66,14 @@ double cpu_seconds()
   getrusage(RUSAGE_SELF, &usage);
   return double(usage.ru_utime.tv_sec + usage.ru_stime.tv_sec) +
          1e-6 * double(usage.ru_utime.tv_usec + usage.ru_stime.tv_usec);
+}
+
+// The median of the values (the mean of the middle two for an even count).
+double median(std::vector<double> values)
+{
+  std::sort(values.begin(), values.end());
+  const std::size_t middle = values.size() / 2;
+  return values.size() % 2 == 1 ? values[middle] : 0.5 * (values[middle - 1] + values[middle]);
 }
 
 double peak_memory_gib()
@@ -196,7 +208,7 @@ double end_to_end_in_child(const Mesh& base, int levels, double t, double sigma,
 int main(int argc, char** argv)
 {
   std::string data = CGAL_HEAT_DIFFUSION_DATA_DIR;
-  int levels = 3, first_level = 0;
+  int levels = 3, first_level = 0, repeat = 1;
   bool table_1 = true;
   double t = 1., sigma = 0.1;
   for(int i = 1; i < argc; ++i)
@@ -212,6 +224,8 @@ int main(int argc, char** argv)
       t = std::atof(argv[++i]);
     else if(arg == "--sigma" && i + 1 < argc)
       sigma = std::atof(argv[++i]);
+    else if(arg == "--repeat" && i + 1 < argc)
+      repeat = (std::max)(1, std::atoi(argv[++i]));
     else
       data = arg;
   }
@@ -241,9 +255,28 @@ int main(int argc, char** argv)
     std::fflush(stdout);
     for(int level = first_level; level <= levels; ++level)
     {
-      const double local_seconds =
-          end_to_end_in_child(armadillo, level, t, sigma, HD::Heat_kernel_method::local, 0.);
-      end_to_end_in_child(armadillo, level, t, sigma, HD::Heat_kernel_method::spectral, local_seconds);
+      std::vector<double> local_runs, spectral_runs, ratios;
+      for(int run = 0; run < repeat; ++run)
+      {
+        const double local_seconds =
+            end_to_end_in_child(armadillo, level, t, sigma, HD::Heat_kernel_method::local, 0.);
+        const double spectral_seconds =
+            end_to_end_in_child(armadillo, level, t, sigma, HD::Heat_kernel_method::spectral, local_seconds);
+        if(local_seconds > 0 && spectral_seconds > 0)
+        {
+          local_runs.push_back(local_seconds);
+          spectral_runs.push_back(spectral_seconds);
+          ratios.push_back(spectral_seconds / local_seconds);
+        }
+      }
+      if(repeat > 1 && !ratios.empty())
+      {
+        const auto [least, most] = std::minmax_element(ratios.begin(), ratios.end());
+        std::printf("| %d | median of %zu runs each | local %.1f s, spectral %.1f s | | | %.2f (%.2f to %.2f) | | | | |\n",
+                    level, ratios.size(), median(local_runs), median(spectral_runs), median(ratios), *least,
+                    *most);
+        std::fflush(stdout);
+      }
     }
   }
   catch(const std::exception& e)

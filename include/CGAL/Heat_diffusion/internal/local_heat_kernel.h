@@ -60,9 +60,19 @@ namespace internal {
     !defined(CGAL_HEAT_DIFFUSION_NO_VECTOR_EXTENSIONS)
 #define CGAL_HEAT_DIFFUSION_VECTOR_EXTENSIONS
 typedef double Four_doubles __attribute__((vector_size(4 * sizeof(double))));
+typedef double Eight_doubles __attribute__((vector_size(8 * sizeof(double))));
 
-inline void load_four(Four_doubles& x, const double* p) { std::memcpy(&x, p, sizeof x); }
-inline void store_four(double* p, const Four_doubles& x) { std::memcpy(p, &x, sizeof x); }
+// (unaligned: the rows of the blocks and of the factor need not start on a vector)
+template <typename Vector>
+inline void load_vector(Vector& x, const double* p)
+{
+  std::memcpy(&x, p, sizeof x);
+}
+template <typename Vector>
+inline void store_vector(double* p, const Vector& x)
+{
+  std::memcpy(p, &x, sizeof x);
+}
 
 // Whether the code runs with AVX: always when compiled for it, else when the processor
 // runs the x86-64-v3 clone (the baseline clone takes the plain loops).
@@ -75,11 +85,6 @@ inline bool four_doubles_fit_a_register()
   return x86_64_v3;
 #endif
 }
-
-typedef double Eight_doubles __attribute__((vector_size(8 * sizeof(double))));
-
-inline void load_eight(Eight_doubles& x, const double* p) { std::memcpy(&x, p, sizeof x); }
-inline void store_eight(double* p, const Eight_doubles& x) { std::memcpy(p, &x, sizeof x); }
 
 // Whether vectors of eight doubles fit a register: always when compiled for AVX-512,
 // else when the processor runs the x86-64-v4 clone. (Where this would disagree with
@@ -713,8 +718,8 @@ private:
         {
           const std::size_t i = std::size_t(w.pattern[std::size_t(top)]);
           Four_doubles xr, xi;
-          load_four(xr, yr + i * Y);
-          load_four(xi, yi + i * Y);
+          load_vector(xr, yr + i * Y);
+          load_vector(xi, yi + i * Y);
           std::fill(yr + i * Y, yr + i * Y + Y, 0.);
           std::fill(yi + i * Y, yi + i * Y + Y, 0.);
           const std::size_t q0 = std::size_t(w.factor_begin[i]), q1 = q0 + std::size_t(w.factor_count[i]);
@@ -723,28 +728,28 @@ private:
             double* zr = yr + std::size_t(w.factor_row[q]) * Y;
             double* zi = yi + std::size_t(w.factor_row[q]) * Y;
             Four_doubles fr, fi, gr, gi;
-            load_four(fr, w.factor_real.data() + q * K);
-            load_four(fi, w.factor_imag.data() + q * K);
-            load_four(gr, zr);
-            load_four(gi, zi);
+            load_vector(fr, w.factor_real.data() + q * K);
+            load_vector(fi, w.factor_imag.data() + q * K);
+            load_vector(gr, zr);
+            load_vector(gi, zi);
             gr -= fr * xr - fi * xi;
             gi -= fr * xi + fi * xr;
-            store_four(zr, gr);
-            store_four(zi, gi);
+            store_vector(zr, gr);
+            store_vector(zi, gi);
           }
           w.factor_row[q1] = k;
           // l_ki = y_i / d_i
           Four_doubles er, ei, scale, uir, uii;
-          load_four(er, w.diagonal_real.data() + i * K);
-          load_four(ei, w.diagonal_imag.data() + i * K);
-          load_four(scale, w.diagonal_scale.data() + i * K);
+          load_vector(er, w.diagonal_real.data() + i * K);
+          load_vector(ei, w.diagonal_imag.data() + i * K);
+          load_vector(scale, w.diagonal_scale.data() + i * K);
           const Four_doubles lr = (xr * er + xi * ei) * scale, li = (xi * er - xr * ei) * scale;
           dkr -= lr * xr - li * xi;
           dki -= lr * xi + li * xr;
           std::memcpy(w.factor_real.data() + q1 * K, &lr, K * sizeof(double));
           std::memcpy(w.factor_imag.data() + q1 * K, &li, K * sizeof(double));
-          load_four(uir, w.heat_forward_real.data() + i * K);
-          load_four(uii, w.heat_forward_imag.data() + i * K);
+          load_vector(uir, w.heat_forward_real.data() + i * K);
+          load_vector(uii, w.heat_forward_imag.data() + i * K);
           ukr -= lr * uir - li * uii;
           uki -= lr * uii + li * uir;
           ++w.factor_count[i];
@@ -842,6 +847,62 @@ private:
     }
   }
 
+#ifdef CGAL_HEAT_DIFFUSION_VECTOR_EXTENSIONS
+  // Row j of pole m in back_substitution(), in the block columns [offset, offset + lanes)
+  // (whole passes), with 1 / d_j = gr + i gi: a pass at a time, summed up in registers
+  // over the factor column and written once, in lanes_per_pass / width vectors of `width`
+  // doubles. (1.1 times faster on armadillo at 416k than the plain loops; one vector of
+  // eight 1.2 times faster than two of four where it fits a register.) Always inlined, so
+  // that it is compiled for the clone of back_substitution() that calls it.
+  template <typename Vector>
+  __attribute__((always_inline)) static inline void back_substitute_in_vectors(Workspace& w, std::size_t j,
+                                                                               std::size_t m, std::size_t offset,
+                                                                               std::size_t lanes, double gr,
+                                                                               double gi, bool zero)
+  {
+    constexpr std::size_t K = number_of_poles, width = sizeof(Vector) / sizeof(double);
+    constexpr std::size_t V = lanes_per_pass / width;
+    static_assert(V * width == lanes_per_pass, "a pass is a whole number of vectors");
+    const std::size_t stride = w.stride;
+    double* ar = w.block_real.data() + (j * K + m) * stride + offset;
+    double* ai = w.block_imag.data() + (j * K + m) * stride + offset;
+    const std::size_t q0 = std::size_t(w.factor_begin[j]), q1 = std::size_t(w.factor_begin[j + 1]);
+    for(std::size_t o = 0; o < lanes; o += lanes_per_pass)
+    {
+      Vector xr[V], xi[V], yr, yi;
+      for(std::size_t v = 0; v < V; ++v)
+        if(zero)
+          xr[v] = xi[v] = Vector{};
+        else
+        {
+          load_vector(yr, ar + o + width * v);
+          load_vector(yi, ai + o + width * v);
+          xr[v] = gr * yr - gi * yi;
+          xi[v] = gr * yi + gi * yr;
+        }
+      for(std::size_t q = q0; q < q1; ++q)
+      {
+        const std::size_t i = std::size_t(w.factor_row[q]);
+        const double lr = w.factor_real[q * K + m], li = w.factor_imag[q * K + m];
+        const double* br = w.block_real.data() + (i * K + m) * stride + offset + o;
+        const double* bi = w.block_imag.data() + (i * K + m) * stride + offset + o;
+        for(std::size_t v = 0; v < V; ++v)
+        {
+          load_vector(yr, br + width * v);
+          load_vector(yi, bi + width * v);
+          xr[v] -= lr * yr - li * yi;
+          xi[v] -= lr * yi + li * yr;
+        }
+      }
+      for(std::size_t v = 0; v < V; ++v)
+      {
+        store_vector(ar + o + width * v, xr[v]);
+        store_vector(ai + o + width * v, xi[v]);
+      }
+    }
+  }
+#endif
+
   // Diagonal scaling and back substitution X_k <- L_k^-T D_k^-1 X_k of the rows listed
   // in w.ancestors, from the last to the first, in the block columns of the passes
   // [first_pass, last_pass): each row needs its rows in the pattern of its factor column,
@@ -865,80 +926,21 @@ private:
         const double er = w.diagonal_real[j * K + m], ei = w.diagonal_imag[j * K + m];
         const double scale = w.diagonal_scale[j * K + m];
         const double gr = er * scale, gi = -ei * scale;  // 1 / d_j
-        // the passes in row j, and in row i
-        double* ar = w.block_real.data() + (j * K + m) * stride + first_pass * S;
-        double* ai = w.block_imag.data() + (j * K + m) * stride + first_pass * S;
-        auto pass_of = [&](const std::vector<double>& block, std::size_t i) {
-          return block.data() + (i * K + m) * stride + first_pass * S;
-        };
         const std::size_t lanes = (last_pass - first_pass) * S;
 #ifdef CGAL_HEAT_DIFFUSION_VECTOR_EXTENSIONS
-        // Pass by pass, summed up in registers over the factor column and written once:
-        // one vector of eight, or two of four (1.1 times faster on armadillo at 416k than
-        // the loops below; eight 1.2 times faster than four where they fit a register).
-        static_assert(S == 8, "one vector of eight, or two of four, per pass");
         if(eights)
-          for(std::size_t o = 0; o < lanes; o += S)
-          {
-            Eight_doubles xr, xi, yr, yi;
-            if(zero)
-              xr = xi = Eight_doubles{0., 0., 0., 0., 0., 0., 0., 0.};
-            else
-            {
-              load_eight(yr, ar + o);
-              load_eight(yi, ai + o);
-              xr = gr * yr - gi * yi;
-              xi = gr * yi + gi * yr;
-            }
-            for(std::size_t q = q0; q < q1; ++q)
-            {
-              const std::size_t i = std::size_t(w.factor_row[q]);
-              const double lr = w.factor_real[q * K + m], li = w.factor_imag[q * K + m];
-              load_eight(yr, pass_of(w.block_real, i) + o);
-              load_eight(yi, pass_of(w.block_imag, i) + o);
-              xr -= lr * yr - li * yi;
-              xi -= lr * yi + li * yr;
-            }
-            store_eight(ar + o, xr);
-            store_eight(ai + o, xi);
-          }
+          back_substitute_in_vectors<Eight_doubles>(w, j, m, first_pass * S, lanes, gr, gi, zero);
         else if(fours)
-          for(std::size_t o = 0; o < lanes; o += S)
-          {
-            Four_doubles xr[2], xi[2], yr, yi;
-            for(std::size_t v = 0; v < 2; ++v)
-              if(zero)
-                xr[v] = xi[v] = Four_doubles{0., 0., 0., 0.};
-              else
-              {
-                load_four(yr, ar + o + 4 * v);
-                load_four(yi, ai + o + 4 * v);
-                xr[v] = gr * yr - gi * yi;
-                xi[v] = gr * yi + gi * yr;
-              }
-            for(std::size_t q = q0; q < q1; ++q)
-            {
-              const std::size_t i = std::size_t(w.factor_row[q]);
-              const double lr = w.factor_real[q * K + m], li = w.factor_imag[q * K + m];
-              const double* br = pass_of(w.block_real, i) + o;
-              const double* bi = pass_of(w.block_imag, i) + o;
-              for(std::size_t v = 0; v < 2; ++v)
-              {
-                load_four(yr, br + 4 * v);
-                load_four(yi, bi + 4 * v);
-                xr[v] -= lr * yr - li * yi;
-                xi[v] -= lr * yi + li * yr;
-              }
-            }
-            for(std::size_t v = 0; v < 2; ++v)
-            {
-              store_four(ar + o + 4 * v, xr[v]);
-              store_four(ai + o + 4 * v, xi[v]);
-            }
-          }
+          back_substitute_in_vectors<Four_doubles>(w, j, m, first_pass * S, lanes, gr, gi, zero);
         else
 #endif
         {
+          // the passes in row j, and in row i
+          double* ar = w.block_real.data() + (j * K + m) * stride + first_pass * S;
+          double* ai = w.block_imag.data() + (j * K + m) * stride + first_pass * S;
+          auto pass_of = [&](const std::vector<double>& block, std::size_t i) {
+            return block.data() + (i * K + m) * stride + first_pass * S;
+          };
           if(zero)
           {
             std::fill_n(ar, lanes, 0.);
