@@ -925,7 +925,6 @@ private:
     {
       const std::size_t j = std::size_t(w.ancestors[position]);
       const bool zero = w.source_begin[j] >= w.source_end[j];  // no source below it
-      const std::size_t q0 = std::size_t(w.factor_begin[j]), q1 = std::size_t(w.factor_begin[j + 1]);
       for(std::size_t m = 0; m < K; ++m)
       {
         const double er = w.diagonal_real[j * K + m], ei = w.diagonal_imag[j * K + m];
@@ -946,6 +945,7 @@ private:
           auto pass_of = [&](const std::vector<double>& block, std::size_t i) {
             return block.data() + (i * K + m) * stride + first_pass * S;
           };
+          const std::size_t q0 = std::size_t(w.factor_begin[j]), q1 = std::size_t(w.factor_begin[j + 1]);
           if(zero)
           {
             std::fill_n(ar, lanes, 0.);
