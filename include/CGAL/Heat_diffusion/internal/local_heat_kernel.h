@@ -47,36 +47,38 @@ namespace CGAL {
 namespace Heat_diffusion {
 namespace internal {
 
-// Vectors of four doubles (GCC's and Clang's vector extensions) where they fit one AVX
-// register: in the x86-64-v3 and v4 clones, or when the compiler targets AVX; and of eight
-// where they fit an AVX-512 register. The back substitution sums each row up in them (in
-// eights where they fit: 1.2 times faster than in fours), and the factorisation updates
-// the poles of a row at once (0.84 of the time on armadillo at 416k). Elsewhere (other compilers, a baseline
-// build, the baseline clone, or CGAL_HEAT_DIFFUSION_NO_VECTOR_EXTENSIONS), plain loops that
-// the compiler vectorises itself: GCC's SSE2 code for the vectors was 2.4 times slower.
-// (The vectors are passed by reference: by value, they would change the calling convention
-// between the baseline code and its clone.)
+// Vectors (GCC's and Clang's vector extensions) of 256 bits where they fit one AVX
+// register: in the x86-64-v3 and v4 clones, or when the compiler targets AVX; and of 512
+// bits where they fit an AVX-512 register. The factorisation updates the poles of a row
+// at once in four doubles (0.84 of the time on armadillo at 416k), and the substitutions,
+// in single precision, run over whole passes in vectors of eight or sixteen floats.
+// Elsewhere (other compilers, a baseline build, the baseline clone, or
+// CGAL_HEAT_DIFFUSION_NO_VECTOR_EXTENSIONS), plain loops that the compiler vectorises
+// itself: GCC's SSE2 code for the vectors was 2.4 times slower. (The vectors are passed
+// by reference: by value, they would change the calling convention between the baseline
+// code and its clone.)
 #if defined(__GNUC__) && (defined(__AVX__) || defined(CGAL_HEAT_DIFFUSION_HAS_VECTOR_CLONES)) && \
     !defined(CGAL_HEAT_DIFFUSION_NO_VECTOR_EXTENSIONS)
 #define CGAL_HEAT_DIFFUSION_VECTOR_EXTENSIONS
 typedef double Four_doubles __attribute__((vector_size(4 * sizeof(double))));
-typedef double Eight_doubles __attribute__((vector_size(8 * sizeof(double))));
+typedef float Eight_floats __attribute__((vector_size(8 * sizeof(float))));
+typedef float Sixteen_floats __attribute__((vector_size(16 * sizeof(float))));
 
 // (unaligned: the rows of the blocks and of the factor need not start on a vector)
-template <typename Vector>
-inline void load_vector(Vector& x, const double* p)
+template <typename Vector, typename Scalar>
+inline void load_vector(Vector& x, const Scalar* p)
 {
   std::memcpy(&x, p, sizeof x);
 }
-template <typename Vector>
-inline void store_vector(double* p, const Vector& x)
+template <typename Vector, typename Scalar>
+inline void store_vector(Scalar* p, const Vector& x)
 {
   std::memcpy(p, &x, sizeof x);
 }
 
 // Whether the code runs with AVX: always when compiled for it, else when the processor
 // runs the x86-64-v3 clone (the baseline clone takes the plain loops).
-inline bool four_doubles_fit_a_register()
+inline bool vector_registers_of_256_bits()
 {
 #ifdef __AVX__
   return true;
@@ -86,15 +88,15 @@ inline bool four_doubles_fit_a_register()
 #endif
 }
 
-// Whether vectors of eight doubles fit a register: always when compiled for AVX-512,
+// Whether vectors of 512 bits fit a register: always when compiled for AVX-512,
 // else when the processor runs the x86-64-v4 clone. (Where this would disagree with
 // the choice of the clone, the code stays right, only slower.)
-inline bool eight_doubles_fit_a_register()
+inline bool vector_registers_of_512_bits()
 {
 #if defined(__AVX512F__)
   return true;
 #elif defined(CGAL_HEAT_DIFFUSION_HAS_VECTOR_CLONES)
-  static const bool x86_64_v4 = four_doubles_fit_a_register() && __builtin_cpu_supports("avx512f") &&
+  static const bool x86_64_v4 = vector_registers_of_256_bits() && __builtin_cpu_supports("avx512f") &&
                                 __builtin_cpu_supports("avx512vl") && __builtin_cpu_supports("avx512bw") &&
                                 __builtin_cpu_supports("avx512dq") && __builtin_cpu_supports("avx512cd");
   return x86_64_v4;
@@ -256,6 +258,19 @@ enum class Local_kernel_mass { consistent, lumped };
 // where u_k = L_k^-1 B_P 1 is computed with the factor and y_ks = L_k^-1 (-a_k e_s) is
 // the forward solution.
 //
+// Precision. The factorisation is computed in double precision, the substitutions in
+// single precision, from a copy of the factor: the block of a cluster (p rows of three
+// poles and c sources, complex) then takes half the memory (1.4 MB on armadillo
+// subdivided to 416k vertices at t = 1, within a core's L2 cache of 2 MB), and a vector
+// register holds twice the lanes. The matrices are well conditioned (|t lambda + z_k| >=
+// 2.68 for the eigenvalues lambda >= 0 of the pencil) and the three poles' terms cancel
+// little (|a_k / z_k| <= 3.23), so the rounding stays small: a column of A_t differs from
+// the one of double-precision substitutions by at most 2.8e-6 (relative L2, armadillo
+// subdivided to 104k vertices, t = 0.5 to 4), 36 times less than the tolerance, and a
+// heat balance by at most 4.9e-7 (104k and 416k). The local kernel took 13 % less time
+// (416k, t = 1), and passes of sixteen columns, which fill an AVX-512 register, 6 % less
+// again.
+//
 // Cost per cluster of c sources: a patch of p ~ (sqrt(c) + radius)^2 vertices, three
 // complex factorisations of it, and 3 c complex forward and back substitutions on part
 // of the factor; p grows like t. Linear in n for fixed t.
@@ -296,8 +311,9 @@ public:
     // the right-hand sides, then the solutions: p rows of (pole, source), split complex;
     // a row holds `stride` block columns, the sources rounded up to lanes_per_pass (the
     // extra columns stay zero)
-    std::vector<double> block_real, block_imag;
+    std::vector<float> block_real, block_imag;
     std::size_t stride = 0;
+    std::vector<float> substitution_factor_real, substitution_factor_imag;  // the factor, rounded to float
     // The sources in the blocks: ordered by the postorder of their rows in the
     // elimination tree, so that the sources in the subtree of row j are the consecutive
     // block columns [source_begin[j], source_end[j]): the forward solutions are zero
@@ -309,7 +325,6 @@ public:
     // by the back substitution, per pass of lanes_per_pass block columns: pass * p + row
     std::vector<unsigned char> row_is_solved;
     std::vector<int> ancestors;  // the rows value() solves next, for one pass
-    bool solve_by_pass = false;  // (or all the passes at once)
     std::vector<double> heat_forward_real, heat_forward_imag;  // L_k^-1 B_P 1, rows of poles
 
     // the last cluster, and the kernel that computed it
@@ -633,8 +648,10 @@ private:
 
   static constexpr std::size_t number_of_poles = 3;  // exponential_poles().size()
   // The block columns that the back substitution solves together, a pass (summed up in
-  // registers; 16 was slower), and the multiple to which a block row is rounded up.
-  static constexpr std::size_t lanes_per_pass = 8;
+  // registers: one vector of sixteen floats, or two of eight), and the multiple to which
+  // a block row is rounded up. (Passes of eight took 6 % more time on armadillo at 416k;
+  // in double precision sixteen had been slower than eight.)
+  static constexpr std::size_t lanes_per_pass = 16;
 
   // Numeric LDL^T of P (t L_P + z_k B_P) P^T for the poles z_k together (they share the
   // symbolic analysis: one traversal), complex symmetric (no conjugation). Entry q of
@@ -647,7 +664,7 @@ private:
     static_assert(K <= 4, "one vector of four per row of y");
     constexpr std::size_t Y = 4;
 #ifdef CGAL_HEAT_DIFFUSION_VECTOR_EXTENSIONS
-    const bool vectors = four_doubles_fit_a_register();
+    const bool vectors = vector_registers_of_256_bits();
 #endif
     const int p = int(w.patch.size());
     const std::size_t nnz = std::size_t(w.factor_begin[std::size_t(p)]);
@@ -817,36 +834,74 @@ private:
     }
   }
 
+#ifdef CGAL_HEAT_DIFFUSION_VECTOR_EXTENSIONS
+  // b -= l a, complex, over `count` lanes (a multiple of the vector's width). Always
+  // inlined, so that it is compiled for the clone that calls it.
+  template <typename Vector>
+  __attribute__((always_inline)) static inline void subtract_product_in_vectors(float* br, float* bi, float lr,
+                                                                                float li, const float* ar,
+                                                                                const float* ai, std::size_t count)
+  {
+    constexpr std::size_t width = sizeof(Vector) / sizeof(float);
+    for(std::size_t s = 0; s < count; s += width)
+    {
+      Vector xr, xi, yr, yi;
+      load_vector(xr, ar + s);
+      load_vector(xi, ai + s);
+      load_vector(yr, br + s);
+      load_vector(yi, bi + s);
+      yr -= lr * xr - li * xi;
+      yi -= lr * xi + li * xr;
+      store_vector(br + s, yr);
+      store_vector(bi + s, yi);
+    }
+  }
+#endif
+
   // Forward substitution X_k <- L_k^-1 X_k for the c right-hand sides of all poles.
   // With unit right-hand sides, the solution of a source is not zero only on the
   // source's ancestors in the elimination tree: row j updates only the block columns
-  // of the sources in its subtree, and the rows without any are skipped.
+  // of the sources in its subtree, and the rows without any are skipped. (Over the whole
+  // passes that hold those columns, in vectors: the other columns of such a row are
+  // zeros, cleared by place_sources(), and the updates they give change nothing.)
   CGAL_HEAT_DIFFUSION_VECTOR_CLONES
   static void forward_substitution(Workspace& w)
   {
-    constexpr std::size_t K = number_of_poles;
+    constexpr std::size_t K = number_of_poles, S = lanes_per_pass;
     const std::size_t p = w.patch.size(), stride = w.stride;
+#ifdef CGAL_HEAT_DIFFUSION_VECTOR_EXTENSIONS
+    const bool sixteens = vector_registers_of_512_bits(), eights = vector_registers_of_256_bits();
+#endif
     for(std::size_t j = 0; j < p; ++j)
     {
-      const std::size_t begin = w.source_begin[j], end = w.source_end[j];
-      if(begin >= end)
+      if(w.source_begin[j] >= w.source_end[j])
         continue;
+      const std::size_t begin = w.source_begin[j] / S * S, end = (w.source_end[j] + S - 1) / S * S;
       const std::size_t q1 = std::size_t(w.factor_begin[j + 1]);
       for(std::size_t q = std::size_t(w.factor_begin[j]); q < q1; ++q)
       {
         const std::size_t i = std::size_t(w.factor_row[q]);
         for(std::size_t m = 0; m < K; ++m)
         {
-          const double lr = w.factor_real[q * K + m], li = w.factor_imag[q * K + m];
-          const double* ar = w.block_real.data() + (j * K + m) * stride;
-          const double* ai = w.block_imag.data() + (j * K + m) * stride;
-          double* br = w.block_real.data() + (i * K + m) * stride;
-          double* bi = w.block_imag.data() + (i * K + m) * stride;
-          for(std::size_t s = begin; s < end; ++s)
-          {
-            br[s] -= lr * ar[s] - li * ai[s];
-            bi[s] -= lr * ai[s] + li * ar[s];
-          }
+          const float lr = w.substitution_factor_real[q * K + m], li = w.substitution_factor_imag[q * K + m];
+          const float* ar = w.block_real.data() + (j * K + m) * stride;
+          const float* ai = w.block_imag.data() + (j * K + m) * stride;
+          float* br = w.block_real.data() + (i * K + m) * stride;
+          float* bi = w.block_imag.data() + (i * K + m) * stride;
+#ifdef CGAL_HEAT_DIFFUSION_VECTOR_EXTENSIONS
+          if(sixteens)
+            subtract_product_in_vectors<Sixteen_floats>(br + begin, bi + begin, lr, li, ar + begin, ai + begin,
+                                                        end - begin);
+          else if(eights)
+            subtract_product_in_vectors<Eight_floats>(br + begin, bi + begin, lr, li, ar + begin, ai + begin,
+                                                      end - begin);
+          else
+#endif
+            for(std::size_t s = begin; s < end; ++s)
+            {
+              br[s] -= lr * ar[s] - li * ai[s];
+              bi[s] -= lr * ai[s] + li * ar[s];
+            }
         }
       }
     }
@@ -856,21 +911,21 @@ private:
   // Row j of pole m in back_substitution(), in the block columns [offset, offset + lanes)
   // (whole passes), with 1 / d_j = gr + i gi: a pass at a time, summed up in registers
   // over the factor column and written once, in lanes_per_pass / width vectors of `width`
-  // doubles. (1.1 times faster on armadillo at 416k than the plain loops; one vector of
-  // eight 1.2 times faster than two of four where it fits a register.) Always inlined, so
-  // that it is compiled for the clone of back_substitution() that calls it.
+  // floats. (1.1 times faster on armadillo at 416k than the plain loops, in double
+  // precision.) Always inlined, so that it is compiled for the clone of
+  // back_substitution() that calls it.
   template <typename Vector>
   __attribute__((always_inline)) static inline void back_substitute_in_vectors(Workspace& w, std::size_t j,
                                                                                std::size_t m, std::size_t offset,
-                                                                               std::size_t lanes, double gr,
-                                                                               double gi, bool zero)
+                                                                               std::size_t lanes, float gr,
+                                                                               float gi, bool zero)
   {
-    constexpr std::size_t K = number_of_poles, width = sizeof(Vector) / sizeof(double);
+    constexpr std::size_t K = number_of_poles, width = sizeof(Vector) / sizeof(float);
     constexpr std::size_t V = lanes_per_pass / width;
     static_assert(V * width == lanes_per_pass, "a pass is a whole number of vectors");
     const std::size_t stride = w.stride;
-    double* ar = w.block_real.data() + (j * K + m) * stride + offset;
-    double* ai = w.block_imag.data() + (j * K + m) * stride + offset;
+    float* ar = w.block_real.data() + (j * K + m) * stride + offset;
+    float* ai = w.block_imag.data() + (j * K + m) * stride + offset;
     const std::size_t q0 = std::size_t(w.factor_begin[j]), q1 = std::size_t(w.factor_begin[j + 1]);
     for(std::size_t o = 0; o < lanes; o += lanes_per_pass)
     {
@@ -888,9 +943,9 @@ private:
       for(std::size_t q = q0; q < q1; ++q)
       {
         const std::size_t i = std::size_t(w.factor_row[q]);
-        const double lr = w.factor_real[q * K + m], li = w.factor_imag[q * K + m];
-        const double* br = w.block_real.data() + (i * K + m) * stride + offset + o;
-        const double* bi = w.block_imag.data() + (i * K + m) * stride + offset + o;
+        const float lr = w.substitution_factor_real[q * K + m], li = w.substitution_factor_imag[q * K + m];
+        const float* br = w.block_real.data() + (i * K + m) * stride + offset + o;
+        const float* bi = w.block_imag.data() + (i * K + m) * stride + offset + o;
         for(std::size_t v = 0; v < V; ++v)
         {
           load_vector(yr, br + width * v);
@@ -919,7 +974,7 @@ private:
     constexpr std::size_t K = number_of_poles, S = lanes_per_pass;
     const std::size_t stride = w.stride, p = w.patch.size();
 #ifdef CGAL_HEAT_DIFFUSION_VECTOR_EXTENSIONS
-    const bool fours = four_doubles_fit_a_register(), eights = eight_doubles_fit_a_register();
+    const bool sixteens = vector_registers_of_512_bits(), eights = vector_registers_of_256_bits();
 #endif
     for(std::size_t position = w.ancestors.size(); position-- > 0;)
     {
@@ -929,41 +984,41 @@ private:
       {
         const double er = w.diagonal_real[j * K + m], ei = w.diagonal_imag[j * K + m];
         const double scale = w.diagonal_scale[j * K + m];
-        const double gr = er * scale, gi = -ei * scale;  // 1 / d_j
+        const float gr = float(er * scale), gi = float(-ei * scale);  // 1 / d_j
         const std::size_t lanes = (last_pass - first_pass) * S;
 #ifdef CGAL_HEAT_DIFFUSION_VECTOR_EXTENSIONS
-        if(eights)
-          back_substitute_in_vectors<Eight_doubles>(w, j, m, first_pass * S, lanes, gr, gi, zero);
-        else if(fours)
-          back_substitute_in_vectors<Four_doubles>(w, j, m, first_pass * S, lanes, gr, gi, zero);
+        if(sixteens)
+          back_substitute_in_vectors<Sixteen_floats>(w, j, m, first_pass * S, lanes, gr, gi, zero);
+        else if(eights)
+          back_substitute_in_vectors<Eight_floats>(w, j, m, first_pass * S, lanes, gr, gi, zero);
         else
 #endif
         {
           // the passes in row j, and in row i
-          double* ar = w.block_real.data() + (j * K + m) * stride + first_pass * S;
-          double* ai = w.block_imag.data() + (j * K + m) * stride + first_pass * S;
-          auto pass_of = [&](const std::vector<double>& block, std::size_t i) {
+          float* ar = w.block_real.data() + (j * K + m) * stride + first_pass * S;
+          float* ai = w.block_imag.data() + (j * K + m) * stride + first_pass * S;
+          auto pass_of = [&](const std::vector<float>& block, std::size_t i) {
             return block.data() + (i * K + m) * stride + first_pass * S;
           };
           const std::size_t q0 = std::size_t(w.factor_begin[j]), q1 = std::size_t(w.factor_begin[j + 1]);
           if(zero)
           {
-            std::fill_n(ar, lanes, 0.);
-            std::fill_n(ai, lanes, 0.);
+            std::fill_n(ar, lanes, 0.f);
+            std::fill_n(ai, lanes, 0.f);
           }
           else
             for(std::size_t s = 0; s < lanes; ++s)
             {
-              const double vr = ar[s], vi = ai[s];
+              const float vr = ar[s], vi = ai[s];
               ar[s] = gr * vr - gi * vi;
               ai[s] = gr * vi + gi * vr;
             }
           for(std::size_t q = q0; q < q1; ++q)
           {
             const std::size_t i = std::size_t(w.factor_row[q]);
-            const double lr = w.factor_real[q * K + m], li = w.factor_imag[q * K + m];
-            const double* br = pass_of(w.block_real, i);
-            const double* bi = pass_of(w.block_imag, i);
+            const float lr = w.substitution_factor_real[q * K + m], li = w.substitution_factor_imag[q * K + m];
+            const float* br = pass_of(w.block_real, i);
+            const float* bi = pass_of(w.block_imag, i);
             for(std::size_t s = 0; s < lanes; ++s)
             {
               ar[s] -= lr * br[s] - li * bi[s];
@@ -996,9 +1051,11 @@ private:
     for(; j != -1 && !solved[std::size_t(j)]; j = w.parent[std::size_t(j)])
       w.ancestors.push_back(j);
     // (the plain loops solve all the passes at once: they are faster over whole rows)
-    if(w.solve_by_pass)
+#ifdef CGAL_HEAT_DIFFUSION_VECTOR_EXTENSIONS
+    if(vector_registers_of_256_bits())
       back_substitution(w, pass, pass + 1);
     else
+#endif
       back_substitution(w, 0, w.stride / lanes_per_pass);
   }
 
@@ -1036,15 +1093,15 @@ private:
         if(w.source_end[std::size_t(j)] == 0)
         {
           w.source_begin[std::size_t(j)] = std::uint32_t(column);
-          std::fill_n(w.block_real.data() + std::size_t(j) * K * stride, K * stride, 0.);
-          std::fill_n(w.block_imag.data() + std::size_t(j) * K * stride, K * stride, 0.);
+          std::fill_n(w.block_real.data() + std::size_t(j) * K * stride, K * stride, 0.f);
+          std::fill_n(w.block_imag.data() + std::size_t(j) * K * stride, K * stride, 0.f);
         }
         w.source_end[std::size_t(j)] = std::uint32_t(column + 1);
       }
       for(std::size_t m = 0; m < K; ++m)
       {
-        w.block_real[(std::size_t(row) * K + m) * stride + column] = -poles[m].residue_real;
-        w.block_imag[(std::size_t(row) * K + m) * stride + column] = -poles[m].residue_imag;
+        w.block_real[(std::size_t(row) * K + m) * stride + column] = float(-poles[m].residue_real);
+        w.block_imag[(std::size_t(row) * K + m) * stride + column] = float(-poles[m].residue_imag);
       }
     }
   }
@@ -1067,10 +1124,9 @@ private:
     w.block_real.resize(K * p * w.stride);
     w.block_imag.resize(K * p * w.stride);
     w.row_is_solved.assign(w.stride / lanes_per_pass * p, 0);
-#ifdef CGAL_HEAT_DIFFUSION_VECTOR_EXTENSIONS
-    w.solve_by_pass = four_doubles_fit_a_register();
-#endif
     factorise(w);
+    w.substitution_factor_real.assign(w.factor_real.begin(), w.factor_real.end());
+    w.substitution_factor_imag.assign(w.factor_imag.begin(), w.factor_imag.end());
     // right-hand sides -a_k e_j, then h = sum_k Re((t L + z_k B)^-1 (-a_k e_j))
     place_sources(sources, c, w);
     forward_substitution(w);
@@ -1088,8 +1144,8 @@ private:
         const double ur = w.heat_forward_real[j * K + m], ui = w.heat_forward_imag[j * K + m];
         const double scale = w.diagonal_scale[j * K + m];
         const double gr = (ur * er + ui * ei) * scale, gi = (ui * er - ur * ei) * scale;  // u_j / d_j
-        const double* yr = w.block_real.data() + (j * K + m) * w.stride;
-        const double* yi = w.block_imag.data() + (j * K + m) * w.stride;
+        const float* yr = w.block_real.data() + (j * K + m) * w.stride;
+        const float* yi = w.block_imag.data() + (j * K + m) * w.stride;
         for(std::size_t s = begin; s < end; ++s)
           w.deficits[s] -= gr * yr[s] - gi * yi[s];
       }
