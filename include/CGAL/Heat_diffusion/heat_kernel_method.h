@@ -27,7 +27,7 @@ enum class Heat_kernel_method
   /// rational approximation of the matrix exponential (three complex poles, one patch
   /// and one factorisation per cluster of 96 sources), with no eigenpairs and no
   /// truncation of the spectrum: relative error below \f$ 10^{-4} \f$ for t in [0.5, 4]
-  /// on CGAL's fandisk and armadillo, where building \f$ A_t \f$ this way is 3 to 21
+  /// on CGAL's fandisk and armadillo, where building \f$ A_t \f$ this way is 5 to 16
   /// times faster than the spectral path, eigen solve included (see the user manual). The right choice
   /// for small t, where the truncated kernel is too flat.
   local,
