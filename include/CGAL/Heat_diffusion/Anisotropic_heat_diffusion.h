@@ -8,6 +8,7 @@
 
 #include <CGAL/Heat_diffusion/Edge_weighted_heat_kernel.h>
 #include <CGAL/Heat_diffusion/heat_kernel_method.h>
+#include <CGAL/Heat_diffusion/internal/Column_group_matrix.h>
 #include <CGAL/Heat_diffusion/internal/heat_operators.h>
 #include <CGAL/Heat_diffusion/internal/local_heat_kernel.h>
 #include <CGAL/Heat_diffusion/internal/parallel_for.h>
@@ -230,11 +231,11 @@ public:
   /// The number of vertices.
   std::size_t number_of_vertices() const { return ncc_->indexed_mesh().number_of_vertices(); }
   /// \f$ A_t \f$, column-stochastic; rows and columns follow `Heat_kernel::vertex_index()`.
-  /// The diffusion keeps \f$ A_t \f$ in compressed rows only; this compressed-column copy
+  /// The diffusion keeps \f$ A_t \f$ in its own layout only; this compressed-column copy
   /// is made on the first call (thread-safe) and kept.
   const Sparse_matrix& operator_matrix() const
   {
-    std::call_once(column_major_->once, [this] { column_major_->matrix = row_major_; });
+    std::call_once(column_major_->once, [this] { column_major_->matrix = matrix_.column_major(); });
     return column_major_->matrix;
   }
   /// Sizes of the heat regions.
@@ -244,10 +245,10 @@ public:
   Eigen::VectorXd diffuse(const Eigen::VectorXd& field, std::size_t number_of_steps) const
   {
     check_field(field);
-    Eigen::VectorXd current = field, next(field.size());
+    Eigen::VectorXd current = field, next(field.size()), partial(Eigen::Index(matrix_.number_of_group_rows()));
     for(std::size_t k = 0; k < number_of_steps; ++k)
     {
-      step(current, next);
+      matrix_.multiply(current, next, partial);
       current.swap(next);
     }
     return current;
@@ -259,7 +260,7 @@ public:
     check_field(field);
     std::vector<Eigen::VectorXd> result(steps.size());
     const std::size_t last = steps.empty() ? 0 : *std::max_element(steps.begin(), steps.end());
-    Eigen::VectorXd current = field, next(field.size());
+    Eigen::VectorXd current = field, next(field.size()), partial(Eigen::Index(matrix_.number_of_group_rows()));
     for(std::size_t k = 0;; ++k)
     {
       for(std::size_t s = 0; s < steps.size(); ++s)
@@ -267,7 +268,7 @@ public:
           result[s] = current;
       if(k == last)
         break;
-      step(current, next);
+      matrix_.multiply(current, next, partial);
       current.swap(next);
     }
     return result;
@@ -302,17 +303,6 @@ private:
         os << "Anisotropic_heat_diffusion: the field value at vertex " << i << " is not finite";
         internal::throw_invalid_input(os.str());
       }
-  }
-
-  // next = A_t current, row by row (parallel), from the row-major copy.
-  void step(const Eigen::VectorXd& current, Eigen::VectorXd& next) const
-  {
-    internal::parallel_for(std::size_t(row_major_.outerSize()), [&](std::size_t i) {
-      double sum = 0;
-      for(Row_major::InnerIterator it(row_major_, Eigen::Index(i)); it; ++it)
-        sum += it.value() * current[it.index()];
-      next[Eigen::Index(i)] = sum;
-    });
   }
 
   static double checked_time(double t)
@@ -439,65 +429,62 @@ private:
   // evaluates h_t(j, i) once prepare(j) has run; `order` is the order of the sources
   // (results do not depend on it: each source writes its own column). `group_begin`, if
   // not empty, is where groups of sources that share work start in `order`, with the end
-  // as last entry (the local kernel's clusters): a thread takes a group whole.
-  // `progress` is told after each block of sources.
+  // as last entry (the local kernel's clusters); else the groups are runs of
+  // `spectral_group_size` sources. A thread takes a group whole, and A_t keeps the
+  // columns group by group (`internal::Column_group_matrix`). `progress` is told after
+  // each block of sources.
   template <typename Columns>
   void build_from_columns(const Columns& kernel, const std::vector<std::size_t>& order,
-                          const std::vector<std::size_t>& group_begin,
-                          const internal::Progress& progress)
+                          std::vector<std::size_t> group_begin, const internal::Progress& progress)
   {
     const internal::Indexed_mesh& mesh = ncc_->indexed_mesh();
     const std::size_t n = mesh.number_of_vertices();
+    if(group_begin.empty())
+    {
+      for(std::size_t first = 0; first < n; first += spectral_group_size)
+        group_begin.push_back(first);
+      group_begin.push_back(n);
+    }
     struct Scratch
     {
       std::vector<std::size_t> mark;  // generation stamps: no clearing between sources
       std::size_t generation = 0;
       std::vector<std::size_t> queue;
       typename Columns::Workspace kernel_workspace;
+      internal::Column_group_matrix::Scratch groups;
     };
     // Memory (1.66M vertices, ~58 entries a column: 96M entries). The columns are
-    // computed in blocks of sources, in parallel within a block, and copied (in
-    // parallel too) to large fixed-size chunks; the per-column vectors and the
-    // per-thread scratch are reused from block to block. Blocks are small enough for
-    // the progress to move about every 1 % at that size.
-    // A_t is then written once, in compressed rows (what the diffusion steps read),
-    // and the chunks are freed. One small vector per column kept to the end would
-    // leave their memory in the allocator's arenas (1.5 GB at that size), and a
-    // compressed-column copy next to the rows would double the final size.
-    typedef typename Row_major::StorageIndex Storage_index;
-    struct Placement
-    {
-      std::size_t chunk = 0, offset = 0, size = 0;
-    };
-    // (new[] leaves the chunks uninitialised: their pages are first written by the
-    // parallel copies, not by one thread filling them with zeros)
-    struct Chunk
-    {
-      std::unique_ptr<Storage_index[]> rows;
-      std::unique_ptr<double[]> values;
-      std::size_t size = 0, capacity = 0;
-    };
-    constexpr std::size_t block_size = 16384, chunk_capacity = std::size_t(1) << 22;
-    std::vector<Placement> placement(n);
-    std::vector<Chunk> chunks;
+    // computed in blocks of sources, in parallel within a block; the thread that
+    // computed a group's columns makes the group, and the block's groups are copied
+    // (in parallel too) to A_t's arrays, once: A_t is never held twice. The per-column
+    // vectors, the groups and the per-thread scratch are reused from block to block.
+    // Blocks are small enough for the progress to move about every 1 % at that size.
+    // (One small vector per column kept to the end would leave their memory in the
+    // allocator's arenas: 1.5 GB at that size.)
+    constexpr std::size_t block_size = 16384;
+    matrix_ = internal::Column_group_matrix(n);
     std::vector<std::vector<std::pair<std::size_t, double> > > columns((std::min)(block_size, n));
-    internal::Per_thread_scratch<Scratch> scratches(
-        [&] { return Scratch{std::vector<std::size_t>(n, 0), 0, {}, kernel.make_workspace()}; });
+    std::vector<internal::Column_group_matrix::Group> groups;
+    internal::Per_thread_scratch<Scratch> scratches([&] {
+      return Scratch{std::vector<std::size_t>(n, 0), 0, {}, kernel.make_workspace(), matrix_.make_scratch()};
+    });
+    statistics_ = Heat_region_statistics();
+    statistics_.min_size = n;
+    std::size_t total = 0;
     progress.report(0., "the construction of the heat regions");
     std::size_t group = 0;  // the first group of the block
     for(std::size_t first = 0; first < n;)
     {
       // (a block ends with a group, so that no group is split between two blocks)
       std::size_t last = (std::min)(first + block_size, n), end_group = group;
-      if(!group_begin.empty())
-      {
-        while(group_begin[end_group] < last)
-          ++end_group;
-        last = group_begin[end_group];
-      }
+      while(group_begin[end_group] < last)
+        ++end_group;
+      last = group_begin[end_group];
       const std::size_t count = last - first;
       if(columns.size() < count)
         columns.resize(count);
+      if(groups.size() < end_group - group)
+        groups.resize(end_group - group);
       auto compute_column = [&](std::size_t position, Scratch& s) {
         const std::size_t j = order[first + position];
         kernel.prepare(j, s.kernel_workspace);
@@ -539,115 +526,43 @@ private:
           for(auto& entry : column)
             entry.second /= sum;
       };
-      if(group_begin.empty())
-        internal::parallel_for_with_scratch(count, scratches, compute_column);
-      else  // a group at a time
-        internal::parallel_for_with_scratch(
-            end_group - group, scratches,
-            [&](std::size_t g, Scratch& s) {
-              for(std::size_t position = group_begin[group + g] - first; position < group_begin[group + g + 1] - first;
-                  ++position)
-                compute_column(position, s);
-            },
-            1);
+      internal::parallel_for_with_scratch(
+          end_group - group, scratches,
+          [&](std::size_t g, Scratch& s) {
+            const std::size_t begin = group_begin[group + g] - first, end = group_begin[group + g + 1] - first;
+            for(std::size_t position = begin; position < end; ++position)
+              compute_column(position, s);
+            internal::Column_group_matrix::make_group(columns.data() + begin, end - begin, s.groups, groups[g]);
+          },
+          1);
+      matrix_.append(groups.data(), end_group - group, order.data() + first);
+      for(std::size_t position = 0; position < count; ++position)
+      {
+        const std::size_t size = columns[position].size();
+        total += size;
+        statistics_.min_size = (std::min)(statistics_.min_size, size);
+        statistics_.max_size = (std::max)(statistics_.max_size, size);
+        statistics_.collapsed_regions += size == 1 ? 1 : 0;
+        statistics_.capped_regions += size >= maximum_region_size ? 1 : 0;
+      }
       group = end_group;
-      // the block's columns one after the other in the last chunk (or a new one)
-      std::size_t block_entries = 0;
-      for(std::size_t position = 0; position < count; ++position)
-        block_entries += columns[position].size();
-      if(chunks.empty() || chunks.back().size + block_entries > chunks.back().capacity)
-      {
-        chunks.emplace_back();
-        chunks.back().capacity = (std::max)(chunk_capacity, block_entries);
-        chunks.back().rows.reset(new Storage_index[chunks.back().capacity]);
-        chunks.back().values.reset(new double[chunks.back().capacity]);
-      }
-      Chunk& chunk = chunks.back();
-      for(std::size_t position = 0; position < count; ++position)
-      {
-        placement[order[first + position]] = {chunks.size() - 1, chunk.size, columns[position].size()};
-        chunk.size += columns[position].size();
-      }
-      internal::parallel_for(count, [&](std::size_t position) {
-        const Placement& p = placement[order[first + position]];
-        for(std::size_t k = 0; k < p.size; ++k)
-        {
-          chunk.rows[p.offset + k] = Storage_index(columns[position][k].first);
-          chunk.values[p.offset + k] = columns[position][k].second;
-        }
-      });
       progress.report(double(last) / double(n), "the construction of the heat regions");
       first = last;
     }
-    std::vector<std::vector<std::pair<std::size_t, double> > >().swap(columns);
-
-    statistics_ = Heat_region_statistics();
-    statistics_.min_size = n;
-    std::size_t total = 0;
-    for(const Placement& p : placement)
-    {
-      total += p.size;
-      statistics_.min_size = (std::min)(statistics_.min_size, p.size);
-      statistics_.max_size = (std::max)(statistics_.max_size, p.size);
-      statistics_.collapsed_regions += p.size == 1 ? 1 : 0;
-      statistics_.capped_regions += p.size >= maximum_region_size ? 1 : 0;
-    }
     statistics_.mean_size = double(total) / double(n);
-    if(total > std::size_t((std::numeric_limits<Storage_index>::max)()))
-      throw std::length_error("CGAL::Heat_diffusion::Anisotropic_heat_diffusion: A_t has more entries than its "
-                              "index type holds; use a smaller time t");
-
-    // Compressed rows, in parallel over `parts` ranges of columns: count the entries of
-    // each row in each range, then scatter each range's columns in increasing j, from
-    // where the ranges before it end in each row: every row is sorted, whatever the
-    // number of ranges.
-    row_major_ = Row_major(Eigen::Index(n), Eigen::Index(n));
-    row_major_.resizeNonZeros(Eigen::Index(total));
-    Storage_index* outer = row_major_.outerIndexPtr();
-    const std::size_t parts = (std::min)(n, internal::number_of_parallel_parts());
-    std::vector<std::vector<Storage_index> > next(parts);  // per range and row
-    auto columns_of = [&](std::size_t part) { return std::make_pair(n * part / parts, n * (part + 1) / parts); };
-    internal::parallel_for(parts, [&](std::size_t part) {
-      next[part].assign(n, 0);
-      const std::pair<std::size_t, std::size_t> range = columns_of(part);
-      for(std::size_t j = range.first; j < range.second; ++j)
-      {
-        const Placement& p = placement[j];
-        for(std::size_t k = p.offset; k < p.offset + p.size; ++k)
-          ++next[part][std::size_t(chunks[p.chunk].rows[k])];
-      }
-    }, 1);
-    Storage_index position = 0;
-    for(std::size_t i = 0; i < n; ++i)
-    {
-      outer[i] = position;
-      for(std::size_t part = 0; part < parts; ++part)
-        position += std::exchange(next[part][i], position);
-    }
-    outer[n] = position;
-    internal::parallel_for(parts, [&](std::size_t part) {
-      const std::pair<std::size_t, std::size_t> range = columns_of(part);
-      for(std::size_t j = range.first; j < range.second; ++j)
-      {
-        const Placement& p = placement[j];
-        for(std::size_t k = p.offset; k < p.offset + p.size; ++k)
-        {
-          const Storage_index target = next[part][std::size_t(chunks[p.chunk].rows[k])]++;
-          row_major_.innerIndexPtr()[target] = Storage_index(j);
-          row_major_.valuePtr()[target] = chunks[p.chunk].values[k];
-        }
-      }
-    }, 1);
+    matrix_.finish();
   }
 
-  // operator_matrix(), made from the rows on the first call (thread-safe), shared by copies.
+  // operator_matrix(), made on the first call (thread-safe), shared by copies.
   struct Column_major_copy
   {
     std::once_flag once;
     Sparse_matrix matrix;
   };
 
-  typedef Eigen::SparseMatrix<double, Eigen::RowMajor> Row_major;
+  // The groups of sources of the spectral kernels (which share no work): enough columns
+  // for a group's rows to be few per column.
+  static constexpr std::size_t spectral_group_size = 64;
 
   std::shared_ptr<const Heat_kernel> owned_kernel_;  // spectral, built from a mesh
   const Heat_kernel* kernel_ = nullptr;              // spectral
@@ -655,7 +570,7 @@ private:
   const NCC* ncc_ = nullptr;
   Heat_kernel_method method_ = Heat_kernel_method::spectral;
   double time_ = 1.;
-  Row_major row_major_;
+  internal::Column_group_matrix matrix_;  // A_t
   std::shared_ptr<Column_major_copy> column_major_ = std::make_shared<Column_major_copy>();
   Heat_region_statistics statistics_;
 };

@@ -1,0 +1,256 @@
+// Copyright (c) 2026 The CGAL Heat_diffusion developers.
+// SPDX-License-Identifier: LGPL-3.0-or-later
+
+#ifndef CGAL_HEAT_DIFFUSION_INTERNAL_COLUMN_GROUP_MATRIX_H
+#define CGAL_HEAT_DIFFUSION_INTERNAL_COLUMN_GROUP_MATRIX_H
+
+#include <CGAL/Heat_diffusion/internal/parallel_for.h>
+
+#include <CGAL/assertions.h>
+
+#include <Eigen/Core>
+#include <Eigen/Sparse>
+
+#include <algorithm>
+#include <cstddef>
+#include <limits>
+#include <memory>
+#include <stdexcept>
+#include <utility>
+#include <vector>
+
+namespace CGAL {
+namespace Heat_diffusion {
+namespace internal {
+
+// A sparse n x n matrix made of groups of columns, computed group by group (A_t: the
+// columns of a cluster of sources of the local kernel, or of a run of sources of the
+// spectral one), and kept as it is computed: per group, its columns, whose entries
+// name the group's rows (the rows its columns touch) by their place among them. A
+// product y = A x first sums every group row, column after column of the group, then
+// every row y_i over its group rows in the order of the groups: the same bits on any
+// number of threads, since the groups are a fixed partition of the columns.
+//
+// Why not one compressed-row matrix: its rows are only known once every column is,
+// so the columns would be kept (all of them) and then scattered into it. At 1.66M
+// vertices (96M entries) that is twice 1.15 GB of new memory, and the scattered writes
+// and page faults of the second took 0.6 to 2 s on 2 cores (their cost varied that
+// much on the same machine). Here a group is written once, next to where it was
+// computed; a row lies in about 3 groups (armadillo subdivided to 416k), and the
+// second sum reads one value per group row.
+class Column_group_matrix
+{
+public:
+  typedef int Index;  // Eigen's default storage index: what operator_matrix() returns
+  typedef Eigen::SparseMatrix<double, Eigen::ColMajor, Index> Sparse_matrix;
+
+  // One group as the thread that computed its columns makes it.
+  struct Group
+  {
+    std::vector<Index> rows;          // the rows its columns touch, in the order first touched
+    std::vector<Index> column_begin;  // per column, where its entries start; the end last
+    std::vector<Index> entry_row;     // per entry, its row's place in `rows`
+    std::vector<double> values;
+  };
+
+  // Per thread, for make_group(): the place of each row of the matrix among the group's
+  // rows (-1 between calls).
+  struct Scratch
+  {
+    std::vector<Index> place;
+  };
+
+  Column_group_matrix() = default;
+  explicit Column_group_matrix(std::size_t n) : n_(n) {}
+
+  Scratch make_scratch() const { return Scratch{std::vector<Index>(n_, -1)}; }
+
+  // Writes to `out` the group of the `count` columns `columns[k]`, each a list of
+  // (row, value).
+  template <typename Column>
+  static void make_group(const Column* columns, std::size_t count, Scratch& s, Group& out)
+  {
+    out.rows.clear();
+    out.column_begin.assign(1, 0);
+    out.entry_row.clear();
+    out.values.clear();
+    for(std::size_t k = 0; k < count; ++k)
+    {
+      for(const auto& entry : columns[k])
+      {
+        Index& place = s.place[entry.first];
+        if(place < 0)
+        {
+          place = Index(out.rows.size());
+          out.rows.push_back(Index(entry.first));
+        }
+        out.entry_row.push_back(place);
+        out.values.push_back(entry.second);
+      }
+      out.column_begin.push_back(Index(out.values.size()));
+    }
+    for(Index row : out.rows)
+      s.place[std::size_t(row)] = -1;
+  }
+
+  // Appends `count` groups as one block (copied in parallel); `sources` lists the
+  // column index of each of their columns, in order.
+  // \throws std::length_error if the matrix gets more entries than Index holds.
+  void append(const Group* groups, std::size_t count, const std::size_t* sources)
+  {
+    Block block;
+    block.first_group_row = group_row_target_.size();
+    block.group_column_begin.assign(count + 1, 0);
+    block.group_row_begin.assign(count + 1, 0);
+    std::vector<std::size_t> entry_offset(count + 1, 0);
+    for(std::size_t g = 0; g < count; ++g)
+    {
+      block.group_column_begin[g + 1] = block.group_column_begin[g] + Index(groups[g].column_begin.size() - 1);
+      block.group_row_begin[g + 1] = block.group_row_begin[g] + Index(groups[g].rows.size());
+      entry_offset[g + 1] = entry_offset[g] + groups[g].values.size();
+    }
+    const std::size_t columns = std::size_t(block.group_column_begin[count]), entries = entry_offset[count];
+    entries_ += entries;
+    if(entries_ > std::size_t((std::numeric_limits<Index>::max)()))
+      throw std::length_error("CGAL::Heat_diffusion::Anisotropic_heat_diffusion: A_t has more entries than its "
+                              "index type holds; use a smaller time t");
+    // (new[] leaves the arrays uninitialised: their pages are first written by the
+    // parallel copies, not by one thread filling them with zeros)
+    block.column_index.assign(sources, sources + columns);
+    block.column_begin.reset(new Index[columns + 1]);
+    block.entry_row.reset(new Index[entries]);
+    block.values.reset(new double[entries]);
+    block.column_begin[columns] = Index(entries);
+    group_row_target_.resize(block.first_group_row + std::size_t(block.group_row_begin[count]));
+    parallel_for(count, [&](std::size_t g) {
+      const Group& group = groups[g];
+      const Index first_row = block.group_row_begin[g], first_column = block.group_column_begin[g];
+      std::copy(group.rows.begin(), group.rows.end(),
+                group_row_target_.begin() + std::ptrdiff_t(block.first_group_row) + first_row);
+      for(std::size_t c = 0; c + 1 < group.column_begin.size(); ++c)
+        block.column_begin[std::size_t(first_column) + c] = Index(entry_offset[g]) + group.column_begin[c];
+      for(std::size_t q = 0; q < group.entry_row.size(); ++q)
+        block.entry_row[entry_offset[g] + q] = first_row + group.entry_row[q];
+      std::copy(group.values.begin(), group.values.end(), block.values.get() + entry_offset[g]);
+    }, 1);
+    blocks_.push_back(std::move(block));
+  }
+
+  // Once every group is appended: the group rows of every row, in the order of the
+  // groups. (Counted and placed in parallel over `parts` ranges of group rows, each
+  // from where the ranges before it end in each row: the order is the same whatever
+  // the number of ranges.)
+  void finish()
+  {
+    const std::size_t total = group_row_target_.size();
+    const std::size_t parts = (std::max)(std::size_t(1), (std::min)(total, number_of_parallel_parts()));
+    auto range_of = [&](std::size_t part) { return std::make_pair(total * part / parts, total * (part + 1) / parts); };
+    std::vector<std::vector<Index> > next(parts);  // per range and row
+    parallel_for(parts, [&](std::size_t part) {
+      next[part].assign(n_, 0);
+      const std::pair<std::size_t, std::size_t> range = range_of(part);
+      for(std::size_t v = range.first; v < range.second; ++v)
+        ++next[part][std::size_t(group_row_target_[v])];
+    }, 1);
+    row_begin_.assign(n_ + 1, 0);
+    Index position = 0;
+    for(std::size_t i = 0; i < n_; ++i)
+    {
+      row_begin_[i] = position;
+      for(std::size_t part = 0; part < parts; ++part)
+        position += std::exchange(next[part][i], position);
+    }
+    row_begin_[n_] = position;
+    row_group_rows_.resize(total);
+    parallel_for(parts, [&](std::size_t part) {
+      const std::pair<std::size_t, std::size_t> range = range_of(part);
+      for(std::size_t v = range.first; v < range.second; ++v)
+        row_group_rows_[std::size_t(next[part][std::size_t(group_row_target_[v])]++)] = Index(v);
+    }, 1);
+  }
+
+  std::size_t number_of_group_rows() const { return group_row_target_.size(); }
+
+  // y = A x; `partial` (number_of_group_rows()) receives the sums of the group rows.
+  void multiply(const Eigen::VectorXd& x, Eigen::VectorXd& y, Eigen::VectorXd& partial) const
+  {
+    CGAL_precondition(row_group_rows_.size() == group_row_target_.size());
+    for(const Block& block : blocks_)
+      parallel_for(block.group_row_begin.size() - 1, [&](std::size_t g) {
+        double* sums = partial.data() + block.first_group_row;
+        for(Index r = block.group_row_begin[g]; r < block.group_row_begin[g + 1]; ++r)
+          sums[r] = 0;
+        for(Index c = block.group_column_begin[g]; c < block.group_column_begin[g + 1]; ++c)
+        {
+          const double xj = x[Eigen::Index(block.column_index[std::size_t(c)])];
+          for(Index q = block.column_begin[std::size_t(c)]; q < block.column_begin[std::size_t(c) + 1]; ++q)
+            sums[block.entry_row[std::size_t(q)]] += block.values[std::size_t(q)] * xj;
+        }
+      }, 1);
+    parallel_for(n_, [&](std::size_t i) {
+      double sum = 0;
+      for(Index q = row_begin_[i]; q < row_begin_[i + 1]; ++q)
+        sum += partial[row_group_rows_[std::size_t(q)]];
+      y[Eigen::Index(i)] = sum;
+    });
+  }
+
+  // The matrix in compressed columns, each column's rows increasing.
+  Sparse_matrix column_major() const
+  {
+    Sparse_matrix matrix{Eigen::Index(n_), Eigen::Index(n_)};
+    matrix.resizeNonZeros(Eigen::Index(entries_));
+    Index* outer = matrix.outerIndexPtr();
+    std::fill(outer, outer + n_ + 1, 0);
+    for(const Block& block : blocks_)
+      for(std::size_t c = 0; c < block.column_index.size(); ++c)
+        outer[std::size_t(block.column_index[c]) + 1] = block.column_begin[c + 1] - block.column_begin[c];
+    for(std::size_t j = 0; j < n_; ++j)
+      outer[j + 1] += outer[j];
+    std::vector<std::pair<Index, double> > column;
+    for(const Block& block : blocks_)
+      for(std::size_t c = 0; c < block.column_index.size(); ++c)
+      {
+        // (in the order the group first touched the rows)
+        column.clear();
+        for(Index q = block.column_begin[c]; q < block.column_begin[c + 1]; ++q)
+          column.emplace_back(group_row_target_[block.first_group_row + std::size_t(block.entry_row[std::size_t(q)])],
+                              block.values[std::size_t(q)]);
+        std::sort(column.begin(), column.end());
+        const std::size_t first = std::size_t(outer[std::size_t(block.column_index[c])]);
+        for(std::size_t k = 0; k < column.size(); ++k)
+        {
+          matrix.innerIndexPtr()[first + k] = column[k].first;
+          matrix.valuePtr()[first + k] = column[k].second;
+        }
+      }
+    return matrix;
+  }
+
+private:
+  // Groups appended together. Group g has the columns [group_column_begin[g],
+  // group_column_begin[g + 1]) and the group rows first_group_row + [group_row_begin[g],
+  // group_row_begin[g + 1]) of the whole matrix; an entry's row is its group row, from
+  // first_group_row. (The large arrays are shared by copies: the matrix does not
+  // change once built.)
+  struct Block
+  {
+    std::size_t first_group_row = 0;
+    std::vector<Index> group_column_begin, group_row_begin;
+    std::vector<Index> column_index;  // per column, its index in the matrix
+    std::shared_ptr<Index[]> column_begin, entry_row;
+    std::shared_ptr<double[]> values;
+  };
+
+  std::size_t n_ = 0, entries_ = 0;
+  std::vector<Block> blocks_;
+  std::vector<Index> group_row_target_;  // per group row, its row of the matrix
+  std::vector<Index> row_begin_;         // per row, where its group rows start in row_group_rows_
+  std::vector<Index> row_group_rows_;    // the group rows of each row, in the order of the groups
+};
+
+} // namespace internal
+} // namespace Heat_diffusion
+} // namespace CGAL
+
+#endif // CGAL_HEAT_DIFFUSION_INTERNAL_COLUMN_GROUP_MATRIX_H
