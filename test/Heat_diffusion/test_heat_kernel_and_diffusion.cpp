@@ -102,6 +102,7 @@ void check_diffusion(const Kernel& kernel, const std::string& name)
   // the diffused field gets smoother where the regions do not collapse
   if(stats.collapsed_regions == 0)
     CHECK(fields[2].maxCoeff() - fields[2].minCoeff() < fields[0].maxCoeff() - fields[0].minCoeff());
+  test_support::check_diffusion_product(diffusion, f0, name);
 }
 
 void check_real_meshes()

@@ -296,6 +296,7 @@ void check_diffusion(const std::string& name, double sigma)
   std::cout << label << ": relative heat drift over 1000 steps " << drift << std::endl;
   CHECK_MESSAGE(drift <= 1e-12, label << ": relative heat drift " << drift);
   CHECK(fields[2].maxCoeff() - fields[2].minCoeff() < fields[0].maxCoeff() - fields[0].minCoeff());
+  test_support::check_diffusion_product(diffusion, f0, label);
 }
 
 // The kernel choice through the API: defaults, accessors, rejections, the free function.

@@ -12,6 +12,12 @@
 
 #include "mesh_measures.h"
 
+#include <Eigen/Sparse>
+
+#ifdef CGAL_LINKED_WITH_TBB
+#include <tbb/global_control.h>
+#endif
+
 #include <cmath>
 #include <cstdlib>
 #include <iostream>
@@ -91,5 +97,33 @@ Mesh load(const std::string& name)
     CHECK_MESSAGE(thrown__ && message__.find(fragment) != std::string::npos,                \
                   "expected " #Exception " containing '" << fragment << "', got '" << message__ << "'"); \
   } while(false)
+
+namespace test_support {
+
+// The product of the diffusion steps (A_t kept by groups of columns,
+// internal::Column_group_matrix) against operator_matrix() (compressed columns, each
+// column's rows increasing): the same up to rounding, and the same bits on one thread
+// as on all of them.
+template <typename Diffusion>
+void check_diffusion_product(const Diffusion& diffusion, const Eigen::VectorXd& f, const std::string& label)
+{
+  const Eigen::SparseMatrix<double>& A = diffusion.operator_matrix();
+  bool sorted = A.isCompressed();
+  for(Eigen::Index j = 0; sorted && j < A.outerSize(); ++j)
+    for(Eigen::Index q = A.outerIndexPtr()[j] + 1; sorted && q < A.outerIndexPtr()[j + 1]; ++q)
+      sorted = A.innerIndexPtr()[q - 1] < A.innerIndexPtr()[q];
+  CHECK_MESSAGE(sorted, label << ": a column of operator_matrix() whose rows are not increasing");
+  const Eigen::VectorXd product = A * f;
+  const double error = (diffusion.diffuse(f, 1) - product).cwiseAbs().maxCoeff() / f.cwiseAbs().maxCoeff();
+  std::cout << label << ": diffuse(f, 1) against operator_matrix() f: " << error << std::endl;
+  CHECK_MESSAGE(error <= 1e-13, label << ": diffuse(f, 1) differs from operator_matrix() f by " << error);
+#ifdef CGAL_LINKED_WITH_TBB
+  const Eigen::VectorXd parallel = diffusion.diffuse(f, 10);
+  const tbb::global_control one_thread(tbb::global_control::max_allowed_parallelism, 1);
+  CHECK_MESSAGE(diffusion.diffuse(f, 10) == parallel, label << ": F^10 on one thread differs from F^10 on all");
+#endif
+}
+
+} // namespace test_support
 
 #endif // CGAL_HEAT_DIFFUSION_TEST_SUPPORT_H

@@ -36,8 +36,8 @@ namespace internal {
 // vertices (96M entries) that is twice 1.15 GB of new memory; the scattered writes
 // and the page faults of the second took 0.6 s with most of the memory free and 1.3
 // to 2.2 s with most of it in the page cache (2 cores). Here a group is written once,
-// next to where it was computed: the local kernel's peak at that size went from 3.55
-// to 2.49 GB. The price is in the product: a row lies in about 3 groups, and a step
+// next to where it was computed: the local kernel's peak at that size went from 3.39
+// to 2.38 GiB. The price is in the product: a row lies in about 3 groups, and a step
 // took 88 ms (79 for the group rows, 9 for the rows) against 68 ms in compressed rows.
 class Column_group_matrix
 {
