@@ -451,7 +451,7 @@ private:
       std::size_t generation = 0;
       std::vector<std::size_t> queue;
       typename Columns::Workspace kernel_workspace;
-      internal::Column_group_matrix::Scratch groups;
+      internal::Column_group_matrix::Scratch group_places;  // for make_group()
     };
     // Memory (1.66M vertices, ~58 entries a column: 96M entries). The columns are
     // computed in blocks of sources, in parallel within a block; the thread that
@@ -532,7 +532,7 @@ private:
             const std::size_t begin = group_begin[group + g] - first, end = group_begin[group + g + 1] - first;
             for(std::size_t position = begin; position < end; ++position)
               compute_column(position, s);
-            internal::Column_group_matrix::make_group(columns.data() + begin, end - begin, s.groups, groups[g]);
+            internal::Column_group_matrix::make_group(columns.data() + begin, end - begin, s.group_places, groups[g]);
           },
           1);
       matrix_.append(groups.data(), end_group - group, order.data() + first);
