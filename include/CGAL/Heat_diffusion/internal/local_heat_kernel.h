@@ -373,7 +373,8 @@ public:
     // a ball of that radius still spans the reach of B^-1 e_j in edges. (Uncapped, on
     // armadillo subdivided to 1.66M vertices at t = 1, the patches of 29 % of the
     // clusters lost too much heat and 15,883 columns were computed again on enlarged
-    // patches; capped, 847 clusters and 887 columns, and 6 % less CPU time in all.)
+    // patches; capped, 847 clusters and 887 columns, and the patch work took 6 % less
+    // CPU time.)
     const double longest_edge = initial_radius_ / reach_in_edges;
     edge_length_.resize(mesh.fan.size());
     for(std::size_t i = 0; i < n; ++i)
