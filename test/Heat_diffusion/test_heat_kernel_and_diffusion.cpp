@@ -103,6 +103,85 @@ void check_diffusion(const Kernel& kernel, const std::string& name)
   if(stats.collapsed_regions == 0)
     CHECK(fields[2].maxCoeff() - fields[2].minCoeff() < fields[0].maxCoeff() - fields[0].minCoeff());
   test_support::check_diffusion_product(diffusion, f0, name);
+  test_support::check_balanced_operator(diffusion, f0, name + " spectral");
+}
+
+Eigen::VectorXd normal_signature_field(const Diffusion& diffusion)
+{
+  const auto& ncc = diffusion.normal_controlled_coordinates();
+  Eigen::VectorXd f(Eigen::Index(diffusion.number_of_vertices()));
+  for(Vertex v : vertices(ncc.mesh()))
+    f[Eigen::Index(ncc.vertex_index(v))] = ncc.normal_signature(v);
+  return f;
+}
+
+// The default operator with the local kernel on CAD with creases, an organic mesh, an
+// open mesh with holes and a mesh of three components; and the paper's column
+// normalisation, which conserves heat but does not keep a constant field.
+void check_operator_normalizations()
+{
+  for(const char* name : {"fandisk.off", "armadillo.off", "mech-holes-shark.off", "blobby_3cc.off"})
+  {
+    const Mesh mesh = test_support::load<Mesh>(name);
+    for(double sigma : {0.1, 1.})
+    {
+      const std::string label = std::string(name) + " sigma " + std::to_string(sigma) + " local";
+      const auto np = HD::parameters::combine(HD::parameters::sigma(sigma),
+                                              HD::parameters::kernel_method(HD::Heat_kernel_method::local));
+      const Diffusion balanced(mesh, np);
+      CHECK(balanced.operator_normalization() == HD::Operator_normalization::balanced);
+      const Eigen::VectorXd f0 = normal_signature_field(balanced);
+      test_support::check_balanced_operator(balanced, f0, label);
+      if(sigma == 0.1)
+        test_support::check_diffusion_product(balanced, f0, label);
+
+      const Diffusion columns(
+          mesh, HD::parameters::combine(np, HD::parameters::operator_normalization(HD::Operator_normalization::columns)));
+      CHECK(columns.balancing_iterations() == 0);
+      const Eigen::SparseMatrix<double>& A = columns.operator_matrix();
+      const Eigen::VectorXd ones = Eigen::VectorXd::Ones(A.rows());
+      const Eigen::VectorXd column_sums = A.transpose() * ones, row_sums = A * ones;
+      const double column_error = (column_sums.array() - 1.).abs().maxCoeff();
+      const Eigen::VectorXd f1000 = columns.diffuse(f0, 1000), ones1000 = columns.diffuse(ones, 1000);
+      const double drift = std::abs(f1000.sum() - f0.sum()) / f0.cwiseAbs().sum();
+      std::cout << label << ": columns A_t, max |column sum - 1| " << column_error << ", row sums ["
+                << row_sums.minCoeff() << ", " << row_sums.maxCoeff() << "], ones after 1000 steps ["
+                << ones1000.minCoeff() << ", " << ones1000.maxCoeff() << "], heat drift " << drift << std::endl;
+      CHECK_MESSAGE(column_error <= 1e-13, label << ": columns: max |column sum - 1| = " << column_error);
+      CHECK_MESSAGE(drift <= 1e-12, label << ": columns: relative heat drift " << drift << " over 1000 steps");
+      CHECK_MESSAGE(A.coeffs().minCoeff() >= 0, label << ": columns: negative entry in A_t");
+      // what the balancing is for: the paper's rows do not sum to 1
+      CHECK_MESSAGE((row_sums.array() - 1.).abs().maxCoeff() > 0.05, label << ": columns: rows sum to 1");
+      // the balanced operator is the kernel made symmetric and rescaled, not another kernel
+      CHECK(balanced.region_statistics().mean_size == columns.region_statistics().mean_size);
+    }
+  }
+}
+
+// With sigma = inf the diffusion is isotropic; on a connected mesh the balanced
+// operator is symmetric, doubly stochastic and irreducible, so F^k tends to the mean of
+// F^0, monotonically in range.
+void check_convergence_to_the_mean()
+{
+  const Mesh mesh = test_support::load<Mesh>("elephant.off");
+  const Diffusion diffusion(mesh, HD::parameters::combine(HD::parameters::sigma(std::numeric_limits<double>::infinity()),
+                                                          HD::parameters::time(4.)));
+  const Eigen::VectorXd f0 = normal_signature_field(diffusion);
+  const double mean = f0.mean(), range = f0.maxCoeff() - f0.minCoeff();
+  const std::vector<std::size_t> steps = {10, 100, 1000};
+  const std::vector<Eigen::VectorXd> fields = diffusion.diffuse(f0, steps);
+  double previous = range;
+  for(std::size_t s = 0; s < steps.size(); ++s)
+  {
+    const double spread = fields[s].maxCoeff() - fields[s].minCoeff();
+    const double off_mean = (fields[s].array() - mean).abs().maxCoeff();
+    std::cout << "elephant sigma inf t 4: k = " << steps[s] << ", range " << spread / range << " of the initial one, "
+              << "max |F^k - mean F^0| " << off_mean / range << std::endl;
+    CHECK_MESSAGE(spread <= previous, "the range of F^k grew at k = " << steps[s]);
+    previous = spread;
+  }
+  const double off_mean = (fields.back().array() - mean).abs().maxCoeff();
+  CHECK_MESSAGE(off_mean <= 1e-3 * range, "F^1000 is " << off_mean / range << " of the range away from the mean");
 }
 
 void check_real_meshes()
@@ -390,6 +469,8 @@ int main()
   try
   {
     check_real_meshes();
+    check_operator_normalizations();
+    check_convergence_to_the_mean();
     check_scale_invariance();
     check_anisotropy();
     check_truncation_and_dense();

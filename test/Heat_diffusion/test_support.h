@@ -23,6 +23,7 @@
 #include <iostream>
 #include <stdexcept>
 #include <string>
+#include <vector>
 
 namespace test_support {
 
@@ -122,6 +123,56 @@ void check_diffusion_product(const Diffusion& diffusion, const Eigen::VectorXd& 
   const tbb::global_control one_thread(tbb::global_control::max_allowed_parallelism, 1);
   CHECK_MESSAGE(diffusion.diffuse(f, 10) == parallel, label << ": F^10 on one thread differs from F^10 on all");
 #endif
+}
+
+// The properties of the balanced operator (Operator_normalization::balanced) that a
+// user checks first: A_t nonnegative, symmetric in pattern and values, every row and
+// every column summing to 1; over 1000 steps a constant field stays constant, the
+// vertex sum of `f` is conserved, every F^k stays within [min F^0, max F^0], and
+// diffusion commutes with adding a constant.
+template <typename Diffusion>
+void check_balanced_operator(const Diffusion& diffusion, const Eigen::VectorXd& f, const std::string& label)
+{
+  const Eigen::SparseMatrix<double>& A = diffusion.operator_matrix();
+  const Eigen::VectorXd ones = Eigen::VectorXd::Ones(A.rows());
+  const Eigen::VectorXd row_sums = A * ones, column_sums = A.transpose() * ones;
+  const double row_error = (row_sums.array() - 1.).abs().maxCoeff();
+  const double column_error = (column_sums.array() - 1.).abs().maxCoeff();
+  const Eigen::SparseMatrix<double> transposed = A.transpose();
+  const Eigen::SparseMatrix<double> difference = A - transposed;
+  double asymmetry = 0;  // relative to the entry, and pattern: an entry without its mirror is a whole entry
+  for(Eigen::Index j = 0; j < difference.outerSize(); ++j)
+    for(Eigen::SparseMatrix<double>::InnerIterator it(difference, j); it; ++it)
+      asymmetry = (std::max)(asymmetry, std::abs(it.value()) /
+                                            (std::max)(std::abs(A.coeff(it.row(), j)), std::abs(A.coeff(j, it.row()))));
+  std::cout << label << ": balanced A_t, " << diffusion.balancing_iterations() << " balancing iterations, max |row sum - 1| "
+            << row_error << ", max |column sum - 1| " << column_error << ", asymmetry " << asymmetry << std::endl;
+  CHECK_MESSAGE(row_error <= 1e-13, label << ": max |row sum - 1| = " << row_error);
+  CHECK_MESSAGE(column_error <= 1e-13, label << ": max |column sum - 1| = " << column_error);
+  CHECK_MESSAGE(A.coeffs().minCoeff() >= 0, label << ": negative entry in A_t");
+  CHECK_MESSAGE(asymmetry <= 1e-14, label << ": A_t not symmetric (relative difference " << asymmetry << ")");
+
+  const std::vector<std::size_t> steps = {1, 10, 100, 1000};
+  const std::vector<Eigen::VectorXd> constant = diffusion.diffuse(Eigen::VectorXd(7.5 * ones), steps);
+  const std::vector<Eigen::VectorXd> fields = diffusion.diffuse(f, steps);
+  const double c = 10. * f.cwiseAbs().maxCoeff();
+  const std::vector<Eigen::VectorXd> shifted = diffusion.diffuse(Eigen::VectorXd(f.array() + c), steps);
+  const double scale = f.cwiseAbs().sum(), range = f.maxCoeff() - f.minCoeff();
+  double constant_error = 0, drift = 0, overshoot = 0, shift_error = 0;
+  for(std::size_t s = 0; s < steps.size(); ++s)
+  {
+    constant_error = (std::max)(constant_error, (constant[s].array() / 7.5 - 1.).abs().maxCoeff());
+    drift = (std::max)(drift, std::abs(fields[s].sum() - f.sum()) / scale);
+    overshoot = (std::max)(overshoot, (std::max)(fields[s].maxCoeff() - f.maxCoeff(), f.minCoeff() - fields[s].minCoeff()));
+    shift_error = (std::max)(shift_error, (shifted[s].array() - c - fields[s].array()).abs().maxCoeff() / c);
+  }
+  std::cout << label << ": over 1000 steps, constant field off by " << constant_error << ", heat drift " << drift
+            << ", beyond the initial range by " << overshoot / range << " of it, diffuse(f + c) - c off by "
+            << shift_error << " of c" << std::endl;
+  CHECK_MESSAGE(constant_error <= 1e-12, label << ": a constant field changes by " << constant_error << " (relative)");
+  CHECK_MESSAGE(drift <= 1e-12, label << ": relative heat drift " << drift << " over 1000 steps");
+  CHECK_MESSAGE(overshoot <= 1e-13 * range, label << ": F^k leaves [min F^0, max F^0] by " << overshoot);
+  CHECK_MESSAGE(shift_error <= 1e-12, label << ": diffuse(f + c) - c differs from diffuse(f) by " << shift_error << " c");
 }
 
 } // namespace test_support

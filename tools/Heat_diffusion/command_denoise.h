@@ -118,6 +118,7 @@ inline int run_denoise(int argc, char** argv)
         HD::parameters::denoising_method(method), CGAL::parameters::number_of_iterations(unsigned(iterations)),
         HD::parameters::number_of_steps(k), HD::parameters::displacement_limit(displacement_limit),
         HD::parameters::sigma(o.sigma), HD::parameters::time(o.time), HD::parameters::kernel_method(o.method),
+        HD::parameters::operator_normalization(o.normalization),
         HD::parameters::number_of_eigenpairs(o.eigenpairs), HD::parameters::coarse_vertex_count(o.coarse),
         HD::parameters::anchor_weight(anchor_weight),
         HD::parameters::progress_callback(std::function<bool(double)>(std::ref(progress))));

@@ -28,6 +28,7 @@ inline Diffusion_spec hks_spec()
   spec.time_note = "the time t of the signature";
   spec.time_alias = true;
   spec.steps = Diffusion_spec::no_steps;
+  spec.normalization = false;  // no A_t
   spec.local_refusal = "the heat kernel signature is a sum over the eigenpairs";
   return spec;
 }

@@ -94,6 +94,7 @@ struct Diffusion_spec
   std::string local_refusal;         // why --kernel local is refused; empty if supported
   std::string coarse_refusal;        // why --coarse is refused; empty if supported
   bool scale_invariant = true;       // --scale-invariant
+  bool normalization = true;         // --normalization (the commands that build A_t)
   bool field = false;                // --field ns|FILE
 };
 
@@ -104,6 +105,8 @@ struct Diffusion_options
   double time = 1.;
   HD::Heat_kernel_method method = HD::Heat_kernel_method::local;  // never automatic: resolved by the parser
   bool automatic_method = true;                                   // --kernel not given
+  HD::Operator_normalization normalization = HD::Operator_normalization::balanced;  // --normalization
+  bool builds_operator = true;  // the subcommand builds A_t (and so has --normalization)
   std::size_t eigenpairs = 150;
   long long coarse = -1;  // -1: the package's automatic choice
   bool scale_invariant = false;
@@ -115,6 +118,10 @@ struct Diffusion_options
 
   bool local() const { return method == HD::Heat_kernel_method::local; }
   std::string kernel_name() const { return local() ? "local" : "spectral"; }
+  std::string normalization_name() const
+  {
+    return normalization == HD::Operator_normalization::balanced ? "balanced" : "columns";
+  }
 };
 
 // The arguments of a subcommand: the shared options of `spec`, plus its own.
@@ -127,6 +134,8 @@ inline Arguments diffusion_arguments(const Diffusion_spec& spec, std::vector<std
     flags.push_back("--scale-invariant");
   for(const char* v : {"-o", "--sigma", "--time", "--kernel", "-m", "--coarse"})
     valued.push_back(v);
+  if(spec.normalization)
+    valued.push_back("--normalization");
   if(spec.time_alias)
     valued.push_back("-t");
   if(spec.steps != Diffusion_spec::no_steps)
@@ -172,6 +181,13 @@ inline Diffusion_options parse_diffusion_options(const Arguments& args, const Di
     o.method = HD::Heat_kernel_method::spectral;
   if(o.local() && !spec.local_refusal.empty())
     throw Usage_error("--kernel local: " + spec.local_refusal);
+
+  o.builds_operator = spec.normalization;
+  const std::string normalization = args.value("--normalization", "balanced");
+  if(normalization != "balanced" && normalization != "columns")
+    throw Usage_error("--normalization must be 'balanced' or 'columns', not '" + normalization + "'");
+  o.normalization = normalization == "balanced" ? HD::Operator_normalization::balanced
+                                                : HD::Operator_normalization::columns;
 
   o.eigenpairs = parse_count("-m", args.value("-m", "150"), 1, maximum_eigenpairs);
   if(args.has("--coarse"))
@@ -225,6 +241,12 @@ inline std::string diffusion_options_help(const Diffusion_spec& spec)
                      "usage errors");
   else
     h += help_option("--kernel K", "'spectral' only (the default): " + spec.local_refusal);
+  if(spec.normalization)
+    h += help_option("--normalization N",
+                   "'balanced' (default): A_t is the kernel balanced to be doubly stochastic: heat is conserved, "
+                   "a constant field stays constant, values stay within the input's range; 'columns': the "
+                   "paper's A_t, whose columns alone sum to 1: heat is conserved, but a constant field is not "
+                   "kept (vertices whose region collapsed gather heat)");
   h += help_option("-m M", "number of eigenpairs of the spectral kernel, 1 to 1000000, clamped to the vertex count "
                            "(default 150)");
   if(spec.coarse_refusal.empty())
@@ -264,6 +286,7 @@ auto with_diffusion_parameters(const Diffusion_options& o, Progress_bar& progres
   const auto np = HD::parameters::combine(
       HD::parameters::sigma(o.sigma), HD::parameters::time(o.time), HD::parameters::kernel_method(o.method),
       HD::parameters::number_of_eigenpairs(o.eigenpairs), HD::parameters::scale_invariant_kernel(o.scale_invariant),
+      HD::parameters::operator_normalization(o.normalization),
       HD::parameters::progress_callback(std::function<bool(double)>(std::ref(progress))));
   if(o.coarse < 0)
     return f(np);
@@ -310,7 +333,9 @@ inline Diffusion_setup make_diffusion(const Mesh& mesh, const Diffusion_options&
     Progress_bar progress("heat regions", !o.quiet);
     s.diffusion = for_input(input, [&] {
       return std::make_unique<Diffusion>(
-          *s.kernel, o.time, HD::parameters::progress_callback(std::function<bool(double)>(std::ref(progress))));
+          *s.kernel, o.time,
+          HD::parameters::combine(HD::parameters::operator_normalization(o.normalization),
+                                  HD::parameters::progress_callback(std::function<bool(double)>(std::ref(progress)))));
     });
     progress.finish();
     timer.stop("operator");
@@ -345,6 +370,8 @@ inline void add_diffusion_json(Json_object& summary, const Diffusion_options& o,
 {
   summary.number("sigma", o.sigma).number("time", o.time).string("kernel", o.kernel_name());
   summary.boolean("kernel_automatic", o.automatic_method);
+  if(o.builds_operator)
+    summary.string("normalization", o.normalization_name());
   if(o.local())
     return;
   Json_object coarse;

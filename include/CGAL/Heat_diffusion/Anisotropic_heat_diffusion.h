@@ -13,7 +13,9 @@
 #include <CGAL/Heat_diffusion/internal/local_heat_kernel.h>
 #include <CGAL/Heat_diffusion/internal/parallel_for.h>
 #include <CGAL/Heat_diffusion/internal/progress.h>
+#include <CGAL/Heat_diffusion/internal/symmetric_balancing.h>
 #include <CGAL/Heat_diffusion/normal_controlled_coordinates.h>
+#include <CGAL/Heat_diffusion/operator_normalization.h>
 #include <CGAL/Heat_diffusion/parameters.h>
 
 #include <Eigen/Sparse>
@@ -66,12 +68,23 @@ struct Heat_region_statistics
 /// would collapse to its source vertex. Growing from the source keeps the regions local
 /// even where the truncated kernel oscillates far away.
 ///
-/// <b>Normalisation (eq. 16-18, corrected).</b> Vertex \f$ v_j \f$ hands its heat to its own
-/// region: \f$ A_t(i, j) = h_t(j, i) / \sum_{k \in \Omega_j} h_t(j, k) \f$ for \f$ i \in \Omega_j \f$.
-/// Every column of \f$ A_t \f$ sums to 1 and all entries are positive, so the total heat
-/// \f$ \sum_i F^k(i) \f$ is conserved exactly (up to rounding) for every k. (The paper
-/// normalises over \f$ \Omega_i \f$, which conserves nothing unless the regions happen to be
-/// symmetric.)
+/// <b>Normalisation (the named parameter `operator_normalization`).</b> By default
+/// (`Operator_normalization::balanced`) \f$ A_t = D K D + \mathrm{diag}(c) \f$: \f$ K \f$ is
+/// the symmetric kernel matrix on the symmetrised regions (\f$ K_{ij} \f$ is the mean of
+/// \f$ h_t(j, i) \f$ where \f$ i \in \Omega_j \f$ and \f$ h_t(i, j) \f$ where \f$ j \in \Omega_i \f$,
+/// each 0 where its region does not hold it), \f$ D \f$ the positive diagonal that balances
+/// it (symmetric Sinkhorn-Knopp iteration, to \f$ |(DKD\mathbf{1})_i - 1| \le 10^{-8} \f$)
+/// and \f$ c \f$ the remainder \f$ 1 - (DKD\mathbf{1})_i \f$ on the diagonal, so that every row
+/// and every column sums to 1 to rounding. \f$ A_t \f$ is nonnegative, symmetric and doubly
+/// stochastic: the total heat \f$ \sum_i F^k(i) \f$ is conserved (paper, Fig. 5), a constant
+/// field stays constant, \f$ \min F^0 \le F^k \le \max F^0 \f$, adding a constant commutes
+/// with diffusion, and no vertex is a sink (a vertex whose region collapsed keeps its
+/// value, or exchanges heat with the regions that hold it). The paper's normalisation
+/// (`Operator_normalization::columns`, eq. 16-18 with the sum over \f$ \Omega_j \f$ that
+/// conservation requires: the paper's \f$ \Omega_i \f$ conserves nothing unless the regions
+/// happen to be symmetric) is \f$ A_t(i, j) = h_t(j, i) / \sum_{k \in \Omega_j} h_t(j, k) \f$
+/// for \f$ i \in \Omega_j \f$: its columns sum to 1, so heat is conserved, but its rows do
+/// not, and a constant field does not stay constant.
 ///
 /// <b>Capped regions.</b> A kernel that is nearly flat (the scale-invariant kernel at
 /// t = 1, whose time unit is \f$ 1/\lambda_\ast \f$, is nearly constant over fandisk) would
@@ -114,6 +127,11 @@ public:
   ///     \cgalParamDefault{`Heat_kernel_method::automatic`: spectral if `number_of_eigenpairs` or
   ///       `coarse_vertex_count` is given or `scale_invariant_kernel` is `true`, else local}
   ///   \cgalParamNEnd
+  ///   \cgalParamNBegin{operator_normalization}
+  ///     \cgalParamDescription{how \f$ A_t \f$ is made from the kernel (see above)}
+  ///     \cgalParamType{`Operator_normalization`}
+  ///     \cgalParamDefault{`Operator_normalization::balanced`}
+  ///   \cgalParamNEnd
   ///   \cgalParamNBegin{sigma, vertex_point_map, vertex_index_map, vertex_normal_map, vertex_normal_rule, geom_traits}
   ///     \cgalParamDescription{as for `Edge_weighted_heat_kernel`, with either method}
   ///   \cgalParamNEnd
@@ -141,12 +159,15 @@ public:
   /// below (spectral); linear in the number of vertices for a fixed t (local: per
   /// cluster of 96 sources, three complex sparse factorisations on a patch whose size
   /// grows like t, and block solves on the part of it that the heat regions read;
-  /// parallel with TBB).
+  /// parallel with TBB); the balancing adds a few tens of products with \f$ A_t \f$
+  /// (linear, parallel).
   template <typename NamedParameters = parameters::Default_named_parameters>
   explicit Anisotropic_heat_diffusion(const TriangleMesh& tm, const NamedParameters& np = parameters::default_values())
     : method_(internal::resolve_kernel_method<NamedParameters>(parameters::choose_parameter(
           parameters::get_parameter(np, internal_np::kernel_method), Heat_kernel_method::automatic),
-          parameters::choose_parameter(parameters::get_parameter(np, internal_np::scale_invariant_kernel), false)))
+          parameters::choose_parameter(parameters::get_parameter(np, internal_np::scale_invariant_kernel), false))),
+      normalization_(checked_normalization(parameters::choose_parameter(
+          parameters::get_parameter(np, internal_np::operator_normalization), Operator_normalization::balanced)))
   {
     using parameters::choose_parameter;
     using parameters::get_parameter;
@@ -184,9 +205,14 @@ public:
   /// Builds \f$ A_t \f$ from an existing (spectral) kernel, which must outlive this object.
   ///
   /// \cgalNamedParamsBegin
+  ///   \cgalParamNBegin{operator_normalization}
+  ///     \cgalParamDescription{how \f$ A_t \f$ is made from the kernel (see above)}
+  ///     \cgalParamType{`Operator_normalization`}
+  ///     \cgalParamDefault{`Operator_normalization::balanced`}
+  ///   \cgalParamNEnd
   ///   \cgalParamNBegin{progress_callback}
   ///     \cgalParamDescription{called with the fraction done while the heat regions are
-  ///       built; returning `false` cancels the construction with a `std::runtime_error`}
+  ///       built and \f$ A_t \f$ balanced; returning `false` cancels the construction with a `std::runtime_error`}
   ///     \cgalParamType{a callable `bool(double)`}
   ///     \cgalParamDefault{none}
   ///   \cgalParamNEnd
@@ -195,11 +221,14 @@ public:
   /// \throws std::invalid_argument if `t` is not positive and finite.
   ///
   /// Complexity: linear in the number of vertices for a fixed t (one breadth-first
-  /// search per vertex, over its region and the region's one-ring; parallel with TBB).
+  /// search per vertex, over its region and the region's one-ring, and the balancing's
+  /// products with \f$ A_t \f$; parallel with TBB).
   template <typename NamedParameters = parameters::Default_named_parameters>
   Anisotropic_heat_diffusion(const Heat_kernel& kernel, double t,
                              const NamedParameters& np = parameters::default_values())
-    : kernel_(&kernel), ncc_(&kernel.normal_controlled_coordinates()), method_(Heat_kernel_method::spectral)
+    : kernel_(&kernel), ncc_(&kernel.normal_controlled_coordinates()), method_(Heat_kernel_method::spectral),
+      normalization_(checked_normalization(parameters::choose_parameter(
+          parameters::get_parameter(np, internal_np::operator_normalization), Operator_normalization::balanced)))
   {
     build_spectral(checked_time(t), internal::Progress(parameters::choose_parameter(
                                         parameters::get_parameter(np, internal_np::progress_callback),
@@ -230,14 +259,20 @@ public:
   std::size_t vertex_index(vertex_descriptor v) const { return ncc_->vertex_index(v); }
   /// The number of vertices.
   std::size_t number_of_vertices() const { return ncc_->indexed_mesh().number_of_vertices(); }
-  /// \f$ A_t \f$, column-stochastic; rows and columns follow `Heat_kernel::vertex_index()`.
-  /// The diffusion keeps \f$ A_t \f$ in its own layout only; this compressed-column copy
-  /// is made on the first call (thread-safe) and kept.
+  /// How \f$ A_t \f$ was made from the kernel.
+  Operator_normalization operator_normalization() const { return normalization_; }
+  /// \f$ A_t \f$: doubly stochastic and symmetric (`Operator_normalization::balanced`) or
+  /// column-stochastic (`Operator_normalization::columns`); rows and columns follow
+  /// `vertex_index()`. The diffusion keeps \f$ A_t \f$ in its own layout only; this
+  /// compressed-column copy is made on the first call (thread-safe) and kept.
   const Sparse_matrix& operator_matrix() const
   {
-    std::call_once(column_major_->once, [this] { column_major_->matrix = matrix_.column_major(); });
+    std::call_once(column_major_->once, [this] { column_major_->matrix = make_operator_matrix(); });
     return column_major_->matrix;
   }
+  /// The number of products with the kernel matrix that its balancing took (0 with
+  /// `Operator_normalization::columns`).
+  std::size_t balancing_iterations() const { return balancing_iterations_; }
   /// Sizes of the heat regions.
   const Heat_region_statistics& region_statistics() const { return statistics_; }
 
@@ -245,10 +280,11 @@ public:
   Eigen::VectorXd diffuse(const Eigen::VectorXd& field, std::size_t number_of_steps) const
   {
     check_field(field);
-    Eigen::VectorXd current = field, next(field.size()), partial(Eigen::Index(matrix_.number_of_group_rows()));
+    Eigen::VectorXd current = field, next(field.size());
+    Product_scratch scratch = make_product_scratch();
     for(std::size_t k = 0; k < number_of_steps; ++k)
     {
-      matrix_.multiply(current, next, partial);
+      apply(current, next, scratch);
       current.swap(next);
     }
     return current;
@@ -260,7 +296,8 @@ public:
     check_field(field);
     std::vector<Eigen::VectorXd> result(steps.size());
     const std::size_t last = steps.empty() ? 0 : *std::max_element(steps.begin(), steps.end());
-    Eigen::VectorXd current = field, next(field.size()), partial(Eigen::Index(matrix_.number_of_group_rows()));
+    Eigen::VectorXd current = field, next(field.size());
+    Product_scratch scratch = make_product_scratch();
     for(std::size_t k = 0;; ++k)
     {
       for(std::size_t s = 0; s < steps.size(); ++s)
@@ -268,7 +305,7 @@ public:
           result[s] = current;
       if(k == last)
         break;
-      matrix_.multiply(current, next, partial);
+      apply(current, next, scratch);
       current.swap(next);
     }
     return result;
@@ -292,6 +329,66 @@ public:
   }
 
 private:
+  // The scratch of one product with A_t (see internal::Column_group_matrix).
+  struct Product_scratch
+  {
+    Eigen::VectorXd partial, gathered;
+  };
+
+  Product_scratch make_product_scratch() const
+  {
+    const Eigen::Index group_rows = Eigen::Index(matrix_.number_of_group_rows());
+    return Product_scratch{Eigen::VectorXd(group_rows),
+                           Eigen::VectorXd(normalization_ == Operator_normalization::balanced ? group_rows : 0)};
+  }
+
+  // next = A_t current
+  void apply(const Eigen::VectorXd& current, Eigen::VectorXd& next, Product_scratch& scratch) const
+  {
+    if(normalization_ == Operator_normalization::balanced)
+      matrix_.multiply_symmetric_part(current, next, scaling_, correction_, scratch.partial, scratch.gathered);
+    else
+      matrix_.multiply(current, next, scratch.partial);
+  }
+
+  // A_t in compressed columns: the stored matrix itself (columns), or
+  // D ((K + K^T) / 2) D + diag(c) made of the stored kernel matrix K (balanced).
+  Sparse_matrix make_operator_matrix() const
+  {
+    Sparse_matrix kernel = matrix_.column_major();
+    if(normalization_ == Operator_normalization::columns)
+      return kernel;
+    const Sparse_matrix transposed = kernel.transpose();
+    Sparse_matrix result = 0.5 * (kernel + transposed);
+    for(Eigen::Index j = 0; j < result.outerSize(); ++j)
+      for(Sparse_matrix::InnerIterator it(result, j); it; ++it)
+      {
+        it.valueRef() = scaling_[it.row()] * it.value() * scaling_[j];
+        if(it.row() == j)
+          it.valueRef() += correction_[j];
+      }
+    return result;
+  }
+
+  // Balances the kernel matrix K kept in matrix_ (see Operator_normalization::balanced).
+  void balance(const internal::Progress& progress)
+  {
+    progress.report(0., "the balancing of A_t");
+    const std::size_t n = number_of_vertices();
+    const Eigen::VectorXd ones = Eigen::VectorXd::Ones(Eigen::Index(n)), none;
+    Product_scratch scratch = make_product_scratch();
+    internal::Symmetric_balancing balancing = internal::balance_symmetric_matrix(
+        n,
+        [&](const Eigen::VectorXd& d, Eigen::VectorXd& row_sums) {
+          matrix_.multiply_symmetric_part(ones, row_sums, d, none, scratch.partial, scratch.gathered);
+        },
+        balancing_tolerance, maximum_balancing_iterations);
+    scaling_ = std::move(balancing.scaling);
+    correction_ = std::move(balancing.correction);
+    balancing_iterations_ = balancing.iterations;
+    progress.report(1., "the balancing of A_t");
+  }
+
   void check_field(const Eigen::VectorXd& field) const
   {
     if(field.size() != Eigen::Index(number_of_vertices()))
@@ -303,6 +400,13 @@ private:
         os << "Anisotropic_heat_diffusion: the field value at vertex " << i << " is not finite";
         internal::throw_invalid_input(os.str());
       }
+  }
+
+  static Operator_normalization checked_normalization(Operator_normalization normalization)
+  {
+    if(normalization != Operator_normalization::balanced && normalization != Operator_normalization::columns)
+      internal::throw_invalid_input("Anisotropic_heat_diffusion: unknown operator_normalization");
+    return normalization;
   }
 
   static double checked_time(double t)
@@ -435,8 +539,11 @@ private:
   // each block of sources.
   template <typename Columns>
   void build_from_columns(const Columns& kernel, const std::vector<std::size_t>& order,
-                          std::vector<std::size_t> group_begin, const internal::Progress& progress)
+                          std::vector<std::size_t> group_begin, const internal::Progress& whole_progress)
   {
+    const bool balanced = normalization_ == Operator_normalization::balanced;
+    // (the balancing takes a few products with K: a small part of the whole)
+    const internal::Progress progress = balanced ? whole_progress.part(0., 0.95) : whole_progress;
     const internal::Indexed_mesh& mesh = ncc_->indexed_mesh();
     const std::size_t n = mesh.number_of_vertices();
     if(group_begin.empty())
@@ -520,9 +627,10 @@ private:
         double sum = 0;
         for(const auto& entry : column)
           sum += entry.second;
+        // (balanced: the kernel values are kept, and balanced once every column is known)
         if(!(column.front().second > 0) || !(sum > 0) || !std::isfinite(sum))
           column.assign(1, {j, 1.});
-        else
+        else if(normalization_ == Operator_normalization::columns)
           for(auto& entry : column)
             entry.second /= sum;
       };
@@ -551,6 +659,8 @@ private:
     }
     statistics_.mean_size = double(total) / double(n);
     matrix_.finish();
+    if(balanced)
+      balance(whole_progress.part(0.95, 1.));
   }
 
   // operator_matrix(), made on the first call (thread-safe), shared by copies.
@@ -564,13 +674,22 @@ private:
   // for a group's rows to be few per column.
   static constexpr std::size_t spectral_group_size = 64;
 
+  // The balancing stops at max_i |(D K D 1)_i - 1| <= balancing_tolerance; the
+  // correction of the diagonal then makes the sums 1 to rounding. The tolerance only
+  // bounds how far A_t is from D K D exactly, far below the kernel's own error.
+  static constexpr double balancing_tolerance = 1e-8;
+  static constexpr std::size_t maximum_balancing_iterations = 1000;
+
   std::shared_ptr<const Heat_kernel> owned_kernel_;  // spectral, built from a mesh
   const Heat_kernel* kernel_ = nullptr;              // spectral
   std::shared_ptr<const NCC> owned_ncc_;             // local
   const NCC* ncc_ = nullptr;
   Heat_kernel_method method_ = Heat_kernel_method::spectral;
+  Operator_normalization normalization_ = Operator_normalization::balanced;
   double time_ = 1.;
-  internal::Column_group_matrix matrix_;  // A_t
+  internal::Column_group_matrix matrix_;  // A_t (columns), or the kernel matrix K (balanced)
+  Eigen::VectorXd scaling_, correction_;  // balanced: A_t = D ((K + K^T) / 2) D + diag(correction)
+  std::size_t balancing_iterations_ = 0;
   std::shared_ptr<Column_major_copy> column_major_ = std::make_shared<Column_major_copy>();
   Heat_region_statistics statistics_;
 };
@@ -596,6 +715,11 @@ private:
 ///     \cgalParamDescription{how the heat kernel is evaluated (see `Anisotropic_heat_diffusion`)}
 ///     \cgalParamType{`Heat_kernel_method`}
 ///     \cgalParamDefault{`Heat_kernel_method::automatic`}
+///   \cgalParamNEnd
+///   \cgalParamNBegin{operator_normalization}
+///     \cgalParamDescription{how \f$ A_t \f$ is made from the kernel (see `Anisotropic_heat_diffusion`)}
+///     \cgalParamType{`Operator_normalization`}
+///     \cgalParamDefault{`Operator_normalization::balanced`: doubly stochastic}
 ///   \cgalParamNEnd
 ///   \cgalParamNBegin{sigma, number_of_eigenpairs, scale_invariant_kernel, progress_callback, vertex_point_map, ...}
 ///     \cgalParamDescription{as for `Edge_weighted_heat_kernel`}

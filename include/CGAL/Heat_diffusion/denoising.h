@@ -377,9 +377,9 @@ inline void fit_vertices_to_normals(const Indexed_mesh& mesh, const Face_adjacen
 ///     \cgalParamType{`std::size_t`, positive}
 ///     \cgalParamDefault{`150`}
 ///   \cgalParamNEnd
-///   \cgalParamNBegin{kernel_method, coarse_vertex_count}
-///     \cgalParamDescription{signature diffusion only: how the heat kernel of each iteration is evaluated, and its coarse level (see `Anisotropic_heat_diffusion` and `Edge_weighted_heat_kernel`)}
-///     \cgalParamDefault{`Heat_kernel_method::automatic` (local unless `number_of_eigenpairs` or `coarse_vertex_count` is given); the automatic coarse level}
+///   \cgalParamNBegin{kernel_method, operator_normalization, coarse_vertex_count}
+///     \cgalParamDescription{signature diffusion only: how the heat kernel of each iteration is evaluated and made into \f$ A_t \f$, and its coarse level (see `Anisotropic_heat_diffusion` and `Edge_weighted_heat_kernel`)}
+///     \cgalParamDefault{`Heat_kernel_method::automatic` (local unless `number_of_eigenpairs` or `coarse_vertex_count` is given); `Operator_normalization::balanced`; the automatic coarse level}
 ///   \cgalParamNEnd
 ///   \cgalParamNBegin{anchor_weight}
 ///     \cgalParamDescription{signature diffusion only: the weight of the positional anchors of the reconstruction (see `reconstruct_from_normal_signature()`): smaller moves the vertices further per iteration}
@@ -457,6 +457,8 @@ void denoise_mesh(TriangleMesh& tm, const NamedParameters& np = parameters::defa
   const double anchor_weight = choose_parameter(get_parameter(np, internal_np::anchor_weight), 0.7);
   const Heat_kernel_method kernel_method = internal::resolve_kernel_method<NamedParameters>(
       choose_parameter(get_parameter(np, internal_np::kernel_method), Heat_kernel_method::automatic), false);
+  const Operator_normalization normalization =
+      choose_parameter(get_parameter(np, internal_np::operator_normalization), Operator_normalization::balanced);
   // -1: the automatic choice of Edge_weighted_heat_kernel.
   const double coarse_vertex_count = double(choose_parameter(get_parameter(np, internal_np::coarse_vertex_count), -1));
   const double user_normal_sigma = choose_parameter(get_parameter(np, internal_np::normal_sigma), 0.);
@@ -553,6 +555,7 @@ void denoise_mesh(TriangleMesh& tm, const NamedParameters& np = parameters::defa
         tm, parameters::combine(mesh_parameters, parameters::sigma(sigma), parameters::time(time),
                                 parameters::number_of_eigenpairs(std::size_t(eigenpairs)),
                                 parameters::kernel_method(kernel_method),
+                                parameters::operator_normalization(normalization),
                                 parameters::coarse_vertex_count(coarse_vertex_count),
                                 parameters::progress_callback(progress)));
     const Normal_controlled_coordinates<TriangleMesh, GeomTraits>& ncc = diffusion.normal_controlled_coordinates();

@@ -27,6 +27,7 @@ enum anchor_weight_t { anchor_weight };
 enum vertex_normal_rule_t { vertex_normal_rule };
 enum scale_invariant_kernel_t { scale_invariant_kernel };
 enum kernel_method_t { kernel_method };
+enum operator_normalization_t { operator_normalization };
 enum progress_callback_t { progress_callback };
 enum feature_threshold_t { feature_threshold };
 enum steps_per_level_t { steps_per_level };
@@ -74,6 +75,8 @@ CGAL_HEAT_DIFFUSION_NAMED_PARAMETER(vertex_normal_rule_t, vertex_normal_rule)
 CGAL_HEAT_DIFFUSION_NAMED_PARAMETER(scale_invariant_kernel_t, scale_invariant_kernel)
 /// How `Anisotropic_heat_diffusion` evaluates the heat kernel, a `Heat_kernel_method`.
 CGAL_HEAT_DIFFUSION_NAMED_PARAMETER(kernel_method_t, kernel_method)
+/// How `Anisotropic_heat_diffusion` makes \f$ A_t \f$ from the kernel, an `Operator_normalization`.
+CGAL_HEAT_DIFFUSION_NAMED_PARAMETER(operator_normalization_t, operator_normalization)
 /// A callable `bool(double fraction_done)` called on the calling thread during long
 /// computations (the eigenpairs and the coarse level, the heat regions, denoising);
 /// returning `false` cancels them with an exception.

@@ -203,6 +203,57 @@ public:
     });
   }
 
+  // y = D ((A + A^T) / 2) D x + diag(c) x, with D = diag(scaling) and c = `correction`
+  // (empty for none): the balanced operator made of a kernel matrix A. One pass over
+  // the entries, so about the memory traffic of multiply(): each column both scatters
+  // into its group rows (A D x) and gathers from them (A^T D x), from the values of D x
+  // copied per group row into `gathered` (number_of_group_rows(), as `partial`). The
+  // same bits on any number of threads, as multiply(). `x` and `y` must differ.
+  void multiply_symmetric_part(const Eigen::VectorXd& x, Eigen::VectorXd& y, const Eigen::VectorXd& scaling,
+                               const Eigen::VectorXd& correction, Eigen::VectorXd& partial,
+                               Eigen::VectorXd& gathered) const
+  {
+    CGAL_precondition(row_group_rows_.size() == group_row_target_.size() && &x != &y);
+    for(const Block& block : blocks_)
+    {
+      double* const sums = partial.data() + block.first_group_row;
+      double* const scaled = gathered.data() + block.first_group_row;
+      const Index* const targets = group_row_target_.data() + block.first_group_row;
+      const Index* const column_index = block.column_index.data();
+      const Index* const column_begin = block.column_begin.get();
+      const Index* const entry_row = block.entry_row.get();
+      const double* const values = block.values.get();
+      parallel_for(block.group_row_begin.size() - 1, [&](std::size_t g) {
+        for(Index r = block.group_row_begin[g]; r < block.group_row_begin[g + 1]; ++r)
+        {
+          const Eigen::Index i = Eigen::Index(targets[r]);
+          sums[r] = 0;
+          scaled[r] = scaling[i] * x[i];
+        }
+        for(Index c = block.group_column_begin[g]; c < block.group_column_begin[g + 1]; ++c)
+        {
+          const Eigen::Index j = Eigen::Index(column_index[c]);
+          const double xj = scaling[j] * x[j];
+          double transposed = 0;
+          for(Index q = column_begin[c]; q < column_begin[c + 1]; ++q)
+          {
+            sums[entry_row[q]] += values[q] * xj;
+            transposed += values[q] * scaled[entry_row[q]];
+          }
+          y[j] = transposed;
+        }
+      }, 1);
+    }
+    const bool corrected = correction.size() > 0;
+    parallel_for(n_, [&](std::size_t i) {
+      double sum = 0;
+      for(Index q = row_begin_[i]; q < row_begin_[i + 1]; ++q)
+        sum += partial[row_group_rows_[std::size_t(q)]];
+      const Eigen::Index k = Eigen::Index(i);
+      y[k] = scaling[k] * (0.5 * (sum + y[k])) + (corrected ? correction[k] * x[k] : 0.);
+    });
+  }
+
   // The matrix in compressed columns, each column's rows increasing.
   Sparse_matrix column_major() const
   {
