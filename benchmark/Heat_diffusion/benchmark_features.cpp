@@ -16,15 +16,27 @@
 //          the full spectral computation, at t = 1 and at t = 4 ln 10 / lambda_m (where
 //          the truncated kernel is accurate): the share of the full features at k = 10
 //          and 40 the coarse path finds with their type within the 2-ring, and the reverse.
+// Table 4 (--shape-filter, alone): the shape filters of filter_shape() (the paper's
+//          Fig. 10, built on the same diffusion) by anchor weight and steps per level,
+//          sigma = 0.1: for the enhancement (1, 3, 3), the NS variance of its target
+//          (the re-synthesised NS) and of the result, relative to the input's, the share
+//          of the asked change reached, the largest vertex displacement (% of the
+//          bounding-box diagonal) and whether the result self-intersects; for the
+//          smoothing (0, 0, 1), the NS variance ratio and self-intersections. The
+//          defaults of filter_shape() were chosen from this table.
 //
-// Usage: benchmark_features [DATA_DIR] [--seeds S] [--meshes a.off,b.off]
-//   S (default 3); meshes (default fandisk.off,armadillo.off). A few minutes on 2 cores.
+// Usage: benchmark_features [DATA_DIR] [--seeds S] [--meshes a.off,b.off] [--shape-filter]
+//   S (default 3); meshes (default fandisk.off,armadillo.off; with --shape-filter,
+//   armadillo.off,bunny00.off,elephant.off,fandisk.off). A few minutes on 2 cores.
 
 #include <CGAL/Exact_predicates_inexact_constructions_kernel.h>
 #include <CGAL/Heat_diffusion/Edge_weighted_heat_kernel.h>
+#include <CGAL/Heat_diffusion/decomposition.h>
 #include <CGAL/Heat_diffusion/multiscale_features.h>
 #include <CGAL/Polygon_mesh_processing/IO/polygon_mesh_io.h>
 #include <CGAL/Polygon_mesh_processing/compute_normal.h>
+#include <CGAL/Polygon_mesh_processing/self_intersections.h>
+#include <CGAL/bounding_box.h>
 #include <CGAL/Surface_mesh.h>
 
 #include "mesh_measures.h"
@@ -108,19 +120,95 @@ std::string counts(const Features& f)
   return std::to_string(f.convex.size()) + "/" + std::to_string(f.concave.size());
 }
 
+double ns_variance(const Mesh& mesh)
+{
+  const HD::Normal_controlled_coordinates<Mesh> ncc(mesh);
+  double sum = 0, squares = 0;
+  for(Vertex v : mesh.vertices())
+  {
+    sum += ncc.normal_signature(v);
+    squares += ncc.normal_signature(v) * ncc.normal_signature(v);
+  }
+  const double n = double(mesh.number_of_vertices());
+  return squares / n - (sum / n) * (sum / n);
+}
+
+void shape_filter_table(const std::string& data, const std::vector<std::string>& meshes)
+{
+  std::printf("Table 4: filter_shape(), sigma = 0.1, t = 1, local kernel: enhancement (1, 3, 3) and smoothing (0, 0, 1)\n");
+  std::printf("| mesh | steps per level | anchor weight | target NS variance | enhanced | reached | largest displacement"
+              " | enhanced self-intersects | smoothed NS variance | smoothed self-intersects | s per filter |\n"
+              "|---|---|---|---|---|---|---|---|---|---|---|\n");
+  for(const std::string& name : meshes)
+  {
+    Mesh mesh;
+    if(!PMP::IO::read_polygon_mesh(data + "/" + name, mesh) || mesh.is_empty())
+      throw std::runtime_error("cannot read " + data + "/" + name);
+    const double v0 = ns_variance(mesh);
+    const auto box = CGAL::bounding_box(mesh.points().begin(), mesh.points().end());
+    const double diagonal = std::sqrt(CGAL::to_double(CGAL::squared_distance(box.min(), box.max())));
+    const bool input_intersects = PMP::does_self_intersect(mesh);
+    for(std::size_t steps : {2, 5})
+    {
+      // the target: the NS re-synthesised as filter_shape() does
+      Mesh copy = mesh;
+      auto ns = copy.add_property_map<Vertex, double>("v:ns", 0.).first;
+      HD::compute_normal_signature(copy, ns);
+      std::vector<Mesh::Property_map<Vertex, double> > bands;
+      for(int j = 1; j <= 3; ++j)
+        bands.push_back(copy.add_property_map<Vertex, double>("v:d" + std::to_string(j), 0.).first);
+      auto target = copy.add_property_map<Vertex, double>("v:target", 0.).first;
+      HD::decompose_field(copy, ns, bands, target, HD::parameters::steps_per_level(steps));
+      HD::synthesize_field(copy, bands, target, std::vector<double>{1., 3., 3.}, target);
+      double sum = 0, squares = 0;
+      for(Vertex v : copy.vertices())
+      {
+        sum += target[v];
+        squares += target[v] * target[v];
+      }
+      const double n = double(copy.number_of_vertices());
+      const double target_variance = squares / n - (sum / n) * (sum / n);
+      for(double anchor : {1., 0.1, 0.05, 0.03, 0.02, 0.01})
+      {
+        const auto np = HD::parameters::combine(HD::parameters::steps_per_level(steps), HD::parameters::anchor_weight(anchor));
+        Mesh enhanced = mesh, smoothed = mesh;
+        const auto start = std::chrono::steady_clock::now();
+        HD::filter_shape(enhanced, std::vector<double>{1., 3., 3.}, np);
+        const double seconds = std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
+        HD::filter_shape(smoothed, std::vector<double>{0., 0., 1.}, np);
+        double moved = 0;
+        for(Vertex v : mesh.vertices())
+          moved = (std::max)(moved, std::sqrt(CGAL::to_double(CGAL::squared_distance(mesh.point(v), enhanced.point(v)))));
+        const double enhanced_variance = ns_variance(enhanced);
+        std::printf("| %s | %zu | %g | %.3f | %.3f | %.2f | %.2f %% | %s | %.2f | %s | %.2f |\n", name.c_str(), steps, anchor,
+                    target_variance / v0, enhanced_variance / v0, (enhanced_variance - v0) / (target_variance - v0),
+                    100 * moved / diagonal,
+                    input_intersects ? "(input does)" : PMP::does_self_intersect(enhanced) ? "yes" : "no",
+                    ns_variance(smoothed) / v0,
+                    input_intersects ? "(input does)" : PMP::does_self_intersect(smoothed) ? "yes" : "no", seconds);
+        std::fflush(stdout);
+      }
+    }
+  }
+}
+
 int main(int argc, char* argv[])
 {
   std::string data = CGAL_HEAT_DIFFUSION_DATA_DIR;
   unsigned seeds = 3;
   std::vector<std::string> meshes = {"fandisk.off", "armadillo.off"};
+  bool shape_filter = false, meshes_given = false;
   for(int i = 1; i < argc; ++i)
   {
     const std::string arg = argv[i];
-    if(arg == "--seeds" && i + 1 < argc)
+    if(arg == "--shape-filter")
+      shape_filter = true;
+    else if(arg == "--seeds" && i + 1 < argc)
       seeds = unsigned(std::atoi(argv[++i]));
     else if(arg == "--meshes" && i + 1 < argc)
     {
       meshes.clear();
+      meshes_given = true;
       std::stringstream list(argv[++i]);
       for(std::string name; std::getline(list, name, ',');)
         meshes.push_back(name);
@@ -129,12 +217,18 @@ int main(int argc, char* argv[])
       data = arg;
     else
     {
-      std::fprintf(stderr, "usage: %s [DATA_DIR] [--seeds S] [--meshes a.off,b.off]\n", argv[0]);
+      std::fprintf(stderr, "usage: %s [DATA_DIR] [--seeds S] [--meshes a.off,b.off] [--shape-filter]\n", argv[0]);
       return 2;
     }
   }
   try
   {
+    if(shape_filter)
+    {
+      shape_filter_table(data, meshes_given ? meshes : std::vector<std::string>{"armadillo.off", "bunny00.off",
+                                                                                 "elephant.off", "fandisk.off"});
+      return 0;
+    }
     const Kernel_setting spectral{"spectral m=150", HD::Heat_kernel_method::spectral, 0};
     const Kernel_setting local{"local", HD::Heat_kernel_method::local, 0};
     std::printf("Table 1: features (convex/concave) with each kernel, t = 1, c = 0.8\n");

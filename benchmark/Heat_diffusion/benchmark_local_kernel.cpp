@@ -9,14 +9,23 @@
 //          regions.
 // Table 2: scaling in n: armadillo Loop-subdivided (CGAL::Subdivision_method_3) at run
 //          time to about 100k, 400k and 1.6M vertices; end to end from the mesh to the
-//          diffused Normal Signature at k = 10 with the local kernel (NCC, operators,
-//          A_t, diffusion), then with the spectral kernel and its automatic coarse level
-//          on the same mesh (the ratio of their totals), and the peak memory
-//          (getrusage's ru_maxrss). Each run has its own process, so that each peak is
-//          its own.
+//          features of the Normal Signature at k = 10 with the local kernel (NCC,
+//          operators, A_t and its balancing, diffusion, features), then with the
+//          spectral kernel and its automatic coarse level on the same mesh (the ratio of
+//          their totals), and the peak memory (getrusage's ru_maxrss). The balancing of
+//          A_t is timed from the progress callback's report that the heat regions are
+//          done to the end of the construction, with the products it took. Each run has
+//          its own process, so that each peak is its own.
+//
+// Table 3: the balanced A_t (Operator_normalization::balanced, the default) against the
+//          paper's column-normalised one on fandisk and armadillo, sigma 0.1 and 1,
+//          t = 0.5 to 4, both from the local kernel: the products the balancing took,
+//          its time against the construction of A_t, the distance between the columns
+//          of the two operators (relative L2: median, 99th percentile, worst), and the
+//          row sums of the column-normalised one, which the balancing brings to 1.
 //
 // Usage: benchmark_local_kernel [DATA_DIR] [--levels L] [--first-level F] [--no-table-1]
-//                               [--time T] [--sigma S] [--repeat R]
+//                               [--no-table-3] [--time T] [--sigma S] [--repeat R]
 //   L (default 3): Loop subdivision levels of table 2 (3 gives 1.6M vertices: minutes);
 //   F (default 0): the first level of table 2 (L = -1 skips table 2);
 //   R (default 1): the runs of each kernel per level of table 2, alternating local and
@@ -28,6 +37,7 @@
 #include <CGAL/Exact_predicates_inexact_constructions_kernel.h>
 #include <CGAL/Heat_diffusion/Anisotropic_heat_diffusion.h>
 #include <CGAL/Heat_diffusion/Edge_weighted_heat_kernel.h>
+#include <CGAL/Heat_diffusion/multiscale_features.h>
 #include <CGAL/Polygon_mesh_processing/IO/polygon_mesh_io.h>
 #include <CGAL/Surface_mesh.h>
 #include <CGAL/subdivision_method_3.h>
@@ -41,6 +51,7 @@
 #include <cstdio>
 #include <cstdlib>
 #include <exception>
+#include <functional>
 #include <string>
 #include <thread>
 #include <vector>
@@ -94,14 +105,6 @@ Mesh load(const std::string& path)
   return mesh;
 }
 
-Eigen::VectorXd normal_signature(const Diffusion& diffusion, const Mesh& mesh)
-{
-  Eigen::VectorXd f(static_cast<Eigen::Index>(mesh.number_of_vertices()));
-  for(auto v : mesh.vertices())
-    f[Eigen::Index(diffusion.vertex_index(v))] = diffusion.normal_controlled_coordinates().normal_signature(v);
-  return f;
-}
-
 void compare_kernels(const std::string& data, double t, double sigma)
 {
   std::printf("\nTable 1: time to A_t from the mesh, t = %g, sigma = %g, m = 150 (%u threads)\n", t, sigma,
@@ -139,6 +142,68 @@ void compare_kernels(const std::string& data, double t, double sigma)
   }
 }
 
+void compare_normalizations(const std::string& data)
+{
+  std::printf("\nTable 3: the balanced A_t against the column-normalised one (local kernel, %u threads)\n",
+              std::thread::hardware_concurrency());
+  std::printf("| mesh | sigma | t | products | balancing s | A_t s | share | column distance: median | 99th percentile |"
+              " worst | row sums of the column-normalised A_t |\n|---|---|---|---|---|---|---|---|---|---|---|\n");
+  for(const char* name : {"fandisk.off", "armadillo.off"})
+  {
+    const Mesh mesh = load(data + "/" + name);
+    for(double sigma : {0.1, 1.})
+      for(double t : {0.5, 1., 2., 4.})
+      {
+        const auto np = HD::parameters::combine(HD::parameters::sigma(sigma), HD::parameters::time(t),
+                                                HD::parameters::kernel_method(HD::Heat_kernel_method::local));
+        std::chrono::steady_clock::time_point regions_done{};
+        const std::function<bool(double)> progress = [&](double fraction) {
+          if(fraction >= 0.95 && regions_done == std::chrono::steady_clock::time_point{})
+            regions_done = std::chrono::steady_clock::now();
+          return true;
+        };
+        const auto start = std::chrono::steady_clock::now();
+        const Diffusion balanced(mesh, HD::parameters::combine(np, HD::parameters::progress_callback(progress)));
+        const double total = seconds_since(start);
+        const double balancing = std::chrono::duration<double>(std::chrono::steady_clock::now() - regions_done).count();
+        const Diffusion columns(
+            mesh, HD::parameters::combine(np, HD::parameters::operator_normalization(HD::Operator_normalization::columns)));
+        const Eigen::SparseMatrix<double>& A = balanced.operator_matrix();
+        const Eigen::SparseMatrix<double>& C = columns.operator_matrix();
+        std::vector<double> distance;
+        for(Eigen::Index j = 0; j < A.cols(); ++j)
+        {
+          const Eigen::VectorXd a = A.col(j), c = C.col(j);
+          distance.push_back((a - c).norm() / c.norm());
+        }
+        std::sort(distance.begin(), distance.end());
+        const Eigen::VectorXd row_sums = C * Eigen::VectorXd::Ones(C.cols());
+        std::printf("| %s | %g | %g | %zu | %.3f | %.3f | %.1f %% | %.3f | %.3f | %.3f | %.2f to %.2f |\n", name, sigma, t,
+                    balanced.balancing_iterations(), balancing, total - balancing, 100. * balancing / total,
+                    distance[distance.size() / 2], distance[distance.size() * 99 / 100], distance.back(),
+                    row_sums.minCoeff(), row_sums.maxCoeff());
+        std::fflush(stdout);
+      }
+  }
+}
+
+// Runs `f` in a child process: a process forked after TBB has started its workers gets
+// none of them, and the runs of table 2 would then use one thread.
+template <typename Function>
+void run_in_child(const char* what, const Function& f)
+{
+  const pid_t child = fork();
+  if(child == 0)
+  {
+    f();
+    std::_Exit(EXIT_SUCCESS);
+  }
+  int status = 0;
+  waitpid(child, &status, 0);
+  if(!WIFEXITED(status) || WEXITSTATUS(status) != 0)
+    std::printf("(%s failed, status %d)\n", what, status);
+}
+
 // One row of table 2, in the calling process (run it in a child for its own peak):
 // the local kernel, or the spectral one of m = 150 eigenpairs with the package's
 // automatic coarse level (above 100k vertices). Returns the total seconds.
@@ -150,13 +215,24 @@ double end_to_end(const Mesh& base, int levels, double t, double sigma, HD::Heat
     CGAL::Subdivision_method_3::Loop_subdivision(mesh, CGAL::parameters::number_of_iterations(levels));
   const double before = peak_memory_gib();
   const auto start = std::chrono::steady_clock::now();
+  // The construction reports 0.95 when the heat regions are done and the balancing starts.
+  std::chrono::steady_clock::time_point regions_done{};
+  const std::function<bool(double)> progress = [&](double fraction) {
+    if(fraction >= 0.95 && regions_done == std::chrono::steady_clock::time_point{})
+      regions_done = std::chrono::steady_clock::now();
+    return true;
+  };
   const Diffusion diffusion(mesh, HD::parameters::combine(HD::parameters::sigma(sigma), HD::parameters::time(t),
-                                                          HD::parameters::kernel_method(method)));
+                                                          HD::parameters::kernel_method(method),
+                                                          HD::parameters::progress_callback(progress)));
   const double build_seconds = seconds_since(start);
-  const Eigen::VectorXd f0 = normal_signature(diffusion, mesh);
-  const Eigen::VectorXd f10 = diffusion.diffuse(f0, 10);
+  const double balancing_seconds = std::chrono::duration<double>(std::chrono::steady_clock::now() - regions_done).count();
+  auto ns = mesh.add_property_map<Mesh::Vertex_index, double>("v:ns").first;
+  for(auto v : mesh.vertices())
+    ns[v] = diffusion.normal_controlled_coordinates().normal_signature(v);
+  const auto features = HD::detect_multiscale_features(diffusion, ns, {10});
   const double total_seconds = seconds_since(start);
-  benchmark_sink = f10.sum();
+  benchmark_sink = double(features[0].convex.size() + features[0].concave.size());
   const auto& r = diffusion.region_statistics();
   const double n = double(mesh.number_of_vertices());
   const bool local = method == HD::Heat_kernel_method::local;
@@ -169,8 +245,9 @@ double end_to_end(const Mesh& base, int levels, double t, double sigma, HD::Heat
   char ratio[32] = "";
   if(!local && local_seconds > 0)
     std::snprintf(ratio, sizeof(ratio), "%.2f", total_seconds / local_seconds);
-  std::printf("| %d | %zu | %s | %.1f | %.1f | %s | %.2f | %.2f | %.2f | %zu / %.1f / %zu (%zu) |\n", levels,
-              std::size_t(mesh.number_of_vertices()), kernel.c_str(), build_seconds, total_seconds, ratio,
+  std::printf("| %d | %zu | %s | %.1f | %.2f (%zu, %.1f %%) | %.1f | %s | %.2f | %.2f | %.2f | %zu / %.1f / %zu (%zu) |\n",
+              levels, std::size_t(mesh.number_of_vertices()), kernel.c_str(), build_seconds, balancing_seconds,
+              diffusion.balancing_iterations(), 100. * balancing_seconds / build_seconds, total_seconds, ratio,
               1e6 * total_seconds / n, before, peak_memory_gib(), r.min_size, r.mean_size, r.max_size,
               r.collapsed_regions);
   std::fflush(stdout);
@@ -209,7 +286,7 @@ int main(int argc, char** argv)
 {
   std::string data = CGAL_HEAT_DIFFUSION_DATA_DIR;
   int levels = 3, first_level = 0, repeat = 1;
-  bool table_1 = true;
+  bool table_1 = true, table_3 = true;
   double t = 1., sigma = 0.1;
   for(int i = 1; i < argc; ++i)
   {
@@ -220,6 +297,8 @@ int main(int argc, char** argv)
       first_level = std::atoi(argv[++i]);
     else if(arg == "--no-table-1")
       table_1 = false;
+    else if(arg == "--no-table-3")
+      table_3 = false;
     else if(arg == "--time" && i + 1 < argc)
       t = std::atof(argv[++i]);
     else if(arg == "--sigma" && i + 1 < argc)
@@ -231,27 +310,15 @@ int main(int argc, char** argv)
   }
   try
   {
-    // Table 1 in a child too: a process forked after TBB has started its workers gets
-    // none of them, and the runs of table 2 would then use one thread.
     if(table_1)
-    {
-      const pid_t child = fork();
-      if(child == 0)
-      {
-        compare_kernels(data, t, sigma);
-        std::_Exit(EXIT_SUCCESS);
-      }
-      int status = 0;
-      waitpid(child, &status, 0);
-      if(!WIFEXITED(status) || WEXITSTATUS(status) != 0)
-        std::printf("(table 1 failed, status %d)\n", status);
-    }
+      run_in_child("table 1", [&] { compare_kernels(data, t, sigma); });
     const Mesh armadillo = load(data + "/armadillo.off");
-    std::printf("\nTable 2: armadillo, Loop-subdivided, end to end to F^10 (t = %g, sigma = %g): the local kernel,"
-                " then the spectral one (m = 150, automatic coarse level) on the same mesh\n", t, sigma);
-    std::printf("| levels | n | kernel | NCC + L, B (+ eigenpairs) + A_t s | + diffusion (total) s |"
-                " total / local | total us / vertex | memory before GiB | peak GiB | regions min/mean/max (collapsed) |\n"
-                "|---|---|---|---|---|---|---|---|---|---|\n");
+    std::printf("\nTable 2: armadillo, Loop-subdivided, end to end to the features at k = 10 (t = %g, sigma = %g):"
+                " the local kernel, then the spectral one (m = 150, automatic coarse level) on the same mesh\n", t, sigma);
+    std::printf("| levels | n | kernel | NCC + L, B (+ eigenpairs) + A_t s | of which the balancing s (products,"
+                " share) | + F^10 and features (total) s | total / local | total us / vertex | memory before GiB |"
+                " peak GiB | regions min/mean/max (collapsed) |\n"
+                "|---|---|---|---|---|---|---|---|---|---|---|\n");
     std::fflush(stdout);
     for(int level = first_level; level <= levels; ++level)
     {
@@ -272,12 +339,14 @@ int main(int argc, char** argv)
       if(repeat > 1 && !ratios.empty())
       {
         const auto [least, most] = std::minmax_element(ratios.begin(), ratios.end());
-        std::printf("| %d | median of %zu runs each | local %.1f s, spectral %.1f s | | | %.2f (%.2f to %.2f) | | | | |\n",
+        std::printf("| %d | median of %zu runs each | local %.1f s, spectral %.1f s | | | | %.2f (%.2f to %.2f) | | | | |\n",
                     level, ratios.size(), median(local_runs), median(spectral_runs), median(ratios), *least,
                     *most);
         std::fflush(stdout);
       }
     }
+    if(table_3)
+      run_in_child("table 3", [&] { compare_normalizations(data); });
   }
   catch(const std::exception& e)
   {

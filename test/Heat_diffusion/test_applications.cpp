@@ -17,6 +17,7 @@
 #include <CGAL/Exact_predicates_exact_constructions_kernel.h>
 #include <CGAL/Exact_predicates_inexact_constructions_kernel.h>
 #include <CGAL/Polygon_mesh_processing/orientation.h>
+#include <CGAL/Polygon_mesh_processing/self_intersections.h>
 #include <CGAL/Simple_cartesian.h>
 #include <CGAL/Surface_mesh.h>
 #include <CGAL/bounding_box.h>
@@ -541,6 +542,64 @@ void check_decomposition(const std::string& name, double sigma, std::size_t step
   }
 }
 
+// Shape filtering with the defaults (the paper's Fig. 10), on an organic mesh and on CAD:
+// the enhancement reaches at least half of the change of the NS variance that its
+// target asks for and moves some vertex by at least 0.5 % of the bounding-box diagonal,
+// the smoothing lowers the NS variance, and neither creates a self-intersection.
+void check_shape_filter_defaults()
+{
+  for(const char* name : {"armadillo.off", "fandisk.off"})
+  {
+    const Mesh mesh = test_support::load<Mesh>(name);
+    CHECK_MESSAGE(!CGAL::Polygon_mesh_processing::does_self_intersect(mesh), name << " self-intersects");
+    const Eigen::VectorXd s0 = normal_signature_of(mesh);
+    const double v0 = variance(s0);
+    // the enhancement's target: the NS re-synthesised as filter_shape() does, with its
+    // defaults (the diffusion's, and 2 steps per level)
+    double target_variance = 0;
+    {
+      Mesh copy = mesh;
+      auto ns = copy.add_property_map<Vertex, double>("v:ns", 0.).first;
+      HD::compute_normal_signature(copy, ns);
+      const Diffusion diffusion(copy);
+      std::vector<Mesh::Property_map<Vertex, double> > bands;
+      for(int j = 1; j <= 3; ++j)
+        bands.push_back(copy.add_property_map<Vertex, double>("v:d" + std::to_string(j), 0.).first);
+      auto residual = copy.add_property_map<Vertex, double>("v:residual", 0.).first;
+      HD::decompose_field(diffusion, ns, bands, residual, HD::parameters::steps_per_level(2));
+      HD::synthesize_field(copy, bands, residual, std::vector<double>{1., 3., 3.}, residual);
+      Eigen::VectorXd target(s0.size());
+      for(Vertex v : copy.vertices())
+        target[Eigen::Index(diffusion.vertex_index(v))] = residual[v];
+      target_variance = variance(target);
+    }
+    const auto box = CGAL::bounding_box(mesh.points().begin(), mesh.points().end());
+    const double diagonal = std::sqrt(CGAL::to_double(CGAL::squared_distance(box.min(), box.max())));
+    Mesh enhanced = mesh, smoothed = mesh;
+    HD::filter_shape(enhanced, std::vector<double>{1., 3., 3.});
+    HD::filter_shape(smoothed, std::vector<double>{0., 0., 1.});
+    double moved = 0;
+    for(Vertex v : mesh.vertices())
+      moved = (std::max)(moved, std::sqrt(CGAL::to_double(CGAL::squared_distance(mesh.point(v), enhanced.point(v)))));
+    const double enhanced_variance = variance(normal_signature_of(enhanced));
+    const double smoothed_variance = variance(normal_signature_of(smoothed));
+    const double reach = (enhanced_variance - v0) / (target_variance - v0);
+    std::cout << name << ", filter_shape with the defaults: enhancement (1, 3, 3): NS variance " << enhanced_variance / v0
+              << " times the input's (target " << target_variance / v0 << ", reached " << reach
+              << " of the change), largest displacement " << moved / diagonal << " of the diagonal; smoothing (0, 0, 1): "
+              << smoothed_variance / v0 << " times" << std::endl;
+    CHECK_MESSAGE(target_variance > v0, name << ": the enhancement's target does not raise the NS variance");
+    CHECK_MESSAGE(reach >= 0.5, name << ": the enhancement reaches " << reach << " of its target's variance change");
+    CHECK_MESSAGE(moved >= 0.005 * diagonal, name << ": the enhancement moves no vertex by 0.5 % of the diagonal ("
+                                                  << moved / diagonal << ")");
+    CHECK_MESSAGE(smoothed_variance < v0, name << ": the smoothing does not lower the NS variance");
+    CHECK_MESSAGE(!CGAL::Polygon_mesh_processing::does_self_intersect(enhanced),
+                  name << ": the enhancement created a self-intersection");
+    CHECK_MESSAGE(!CGAL::Polygon_mesh_processing::does_self_intersect(smoothed),
+                  name << ": the smoothing created a self-intersection");
+  }
+}
+
 // The applications take a diffusion built with either kernel: the local one has no
 // eigenpairs, so they must not ask for them. With the local kernel's untruncated
 // columns the features differ from the truncated spectral kernel's (the manual's
@@ -601,5 +660,6 @@ int main()
   check_decomposition("elephant.off", 0.5, 5);
   check_decomposition("elephant.off", 0.5, 5, HD::Heat_kernel_method::local);
   check_local_kernel_features();
+  check_shape_filter_defaults();
   return test_support::report("test_applications");
 }

@@ -76,6 +76,20 @@ expect 2 '--time must be a number > 0' -- "$tool" diffuse "$data/elephant.off" -
 expect 2 '-k takes a comma-separated list' -- "$tool" diffuse "$data/elephant.off" -k 1,-2
 expect 2 '-m must be a whole number from 1 to 1000000' -- "$tool" diffuse "$data/elephant.off" -m 0
 expect 0 'Usage: heat_diffusion diffuse' -- "$tool" diffuse --help
+# the default operator keeps a constant field (and every field within its range); the
+# paper's column normalisation does not
+awk 'BEGIN { for(i = 0; i < 6475; ++i) print 1 }' > ones.txt
+"$tool" diffuse "$data/fandisk.off" --field ones.txt -k 0,1,100 -o ones --json --quiet --no-baseline > ones.json
+"$tool" diffuse "$data/fandisk.off" --field ones.txt -k 0,1,100 -o ones_columns --normalization columns --json --quiet \
+  --no-baseline > ones_columns.json
+if python3 -c '
+import json; d = json.load(open("ones.json")); c = json.load(open("ones_columns.json"))
+assert d["normalization"] == "balanced" and c["normalization"] == "columns", (d["normalization"], c["normalization"])
+assert all(abs(d[m][k] - 1) <= 1e-13 for m in ("minimum", "maximum") for k in d[m]), (d["minimum"], d["maximum"])
+assert c["maximum"]["100"] > 1.1 and c["minimum"]["100"] < 0.9, (c["minimum"], c["maximum"])
+assert all(abs(x["total_heat"][k] - 6475) <= 1e-9 for x in (d, c) for k in x["total_heat"])'; then pass; else fail "constant field, balanced and columns"; fi
+expect 2 "--normalization must be 'balanced' or 'columns'" -- "$tool" diffuse "$data/fandisk.off" --normalization rows
+expect 2 'unknown option --normalization' -- "$tool" hks "$data/fandisk.off" --normalization columns
 cp field.txt ef_k0.ply
 expect 1 'refusing to overwrite the input' -- "$tool" diffuse "$data/elephant.off" --field ef_k0.ply -o ef -k 0
 

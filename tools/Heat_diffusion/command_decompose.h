@@ -20,12 +20,13 @@ namespace heat_diffusion_cli {
 
 // A decomposition spec: -k is the number of steps of one level, also spelled
 // --steps-per-level.
-inline Diffusion_spec level_spec()
+inline Diffusion_spec level_spec(const std::string& steps_default = "5")
 {
   Diffusion_spec spec;
   spec.steps = Diffusion_spec::single_step;
-  spec.steps_default = "5";
-  spec.steps_help = "diffusion steps of one level, 1 to 1000000 (default 5); --steps-per-level S is the same";
+  spec.steps_default = steps_default;
+  spec.steps_help = "diffusion steps of one level, 1 to 1000000 (default " + steps_default +
+                    "); --steps-per-level S is the same";
   return spec;
 }
 

@@ -121,11 +121,13 @@ inline int run_diffuse(int argc, char** argv)
   // All outputs, or none: they are renamed into place together at the end.
   const double half_range = robust_half_range(in_mesh_order(f0, mesh, diffusion));
   Output_files files;
-  Json_object heat, global_heat, names;
+  Json_object heat, global_heat, names, minimum, maximum;
   for(std::size_t s = 0; s < o.steps.size(); ++s)
   {
     write_fields_ply(files, outputs[s], mesh, {{"field", in_mesh_order(fields[s], mesh, diffusion)}}, half_range);
     heat.number(std::to_string(o.steps[s]), fields[s].sum());
+    minimum.number(std::to_string(o.steps[s]), fields[s].minCoeff());
+    maximum.number(std::to_string(o.steps[s]), fields[s].maxCoeff());
     if(!baseline_heat.empty())
       global_heat.number(std::to_string(o.steps[s]), baseline_heat[s]);
     names.string(std::to_string(o.steps[s]), outputs[s]);
@@ -160,6 +162,8 @@ inline int run_diffuse(int argc, char** argv)
       summary.number("lambda_min", lambda[0]).number("lambda_max", lambda[lambda.size() - 1]);
     }
     summary.object("heat_regions", heat_region_json(regions)).object("total_heat", heat);
+    // (the balanced operator keeps every F^k within the range of F^0)
+    summary.object("minimum", minimum).object("maximum", maximum);
     if(!baseline_heat.empty())
       summary.object("global_total_heat", global_heat).object("global_baseline", baseline);
     summary.object("timings_ms", timings_json(timer));

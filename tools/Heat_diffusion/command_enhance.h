@@ -61,7 +61,8 @@ inline double normal_signature_variance(const Mesh& mesh)
   return squares / n - (sum / n) * (sum / n);
 }
 
-inline Diffusion_spec enhance_spec() { return level_spec(); }
+// The defaults of filter_shape(): 2 steps per level.
+inline Diffusion_spec enhance_spec() { return level_spec("2"); }
 
 inline std::string enhance_help()
 {
@@ -78,7 +79,7 @@ inline std::string enhance_help()
          "Options:\n" +
          help_option("--weights W,...", "one weight per band, finest first; their number is L (default 1,3,3)") +
          diffusion_options_help(enhance_spec()) +
-         help_option("--anchor-weight A", "weight of the positional anchors of the reconstruction (default 1); "
+         help_option("--anchor-weight A", "weight of the positional anchors of the reconstruction (default 0.03); "
                                           "smaller lets the shape move further") +
          help_option("-o OUT", "the edited mesh, .off, .obj, .ply or .stl (default: MESH's name with _enhanced.off, "
                                "in the current folder)") +
@@ -98,7 +99,7 @@ inline int run_enhance(int argc, char** argv)
   const Diffusion_options o = parse_diffusion_options(args, spec);
   const std::vector<double> weights = parse_weights(args.value("--weights", "1,3,3"));
   const std::size_t steps_per_level = parse_steps_per_level(args, o);
-  const double anchor_weight = parse_number("--anchor-weight", args.value("--anchor-weight", "1"), 0., true);
+  const double anchor_weight = parse_number("--anchor-weight", args.value("--anchor-weight", "0.03"), 0., true);
   const std::string output = args.value("-o", default_output(input, "_enhanced.off"));
   mesh_format(output);
   check_output_path(output, {input});

@@ -73,7 +73,7 @@ struct Heat_region_statistics
 /// the symmetric kernel matrix on the symmetrised regions (\f$ K_{ij} \f$ is the mean of
 /// \f$ h_t(j, i) \f$ where \f$ i \in \Omega_j \f$ and \f$ h_t(i, j) \f$ where \f$ j \in \Omega_i \f$,
 /// each 0 where its region does not hold it), \f$ D \f$ the positive diagonal that balances
-/// it (symmetric Sinkhorn-Knopp iteration, to \f$ |(DKD\mathbf{1})_i - 1| \le 10^{-8} \f$)
+/// it (symmetric Sinkhorn-Knopp iteration, to \f$ |(DKD\mathbf{1})_i - 1| \le 10^{-6} \f$)
 /// and \f$ c \f$ the remainder \f$ 1 - (DKD\mathbf{1})_i \f$ on the diagonal, so that every row
 /// and every column sums to 1 to rounding. \f$ A_t \f$ is nonnegative, symmetric and doubly
 /// stochastic: the total heat \f$ \sum_i F^k(i) \f$ is conserved (paper, Fig. 5), a constant
@@ -677,7 +677,7 @@ private:
   // The balancing stops at max_i |(D K D 1)_i - 1| <= balancing_tolerance; the
   // correction of the diagonal then makes the sums 1 to rounding. The tolerance only
   // bounds how far A_t is from D K D exactly, far below the kernel's own error.
-  static constexpr double balancing_tolerance = 1e-8;
+  static constexpr double balancing_tolerance = 1e-6;
   static constexpr std::size_t maximum_balancing_iterations = 1000;
 
   std::shared_ptr<const Heat_kernel> owned_kernel_;  // spectral, built from a mesh
