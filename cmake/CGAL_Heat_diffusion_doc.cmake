@@ -7,24 +7,47 @@ find_package(Doxygen QUIET)
 
 set(CGAL_HEAT_DIFFUSION_SOURCE_DIR "${PROJECT_SOURCE_DIR}")
 set(CGAL_HEAT_DIFFUSION_DOC_OUTPUT_DIR "${PROJECT_BINARY_DIR}/doc/Heat_diffusion")
+# MathJax goes with the manual (html/mathjax, see CGAL_Heat_diffusion_doc_mathjax.cmake),
+# so that its formulas render without network access; without a MathJax 2 here, the
+# manual loads MathJax from a web CDN.
+find_path(CGAL_HEAT_DIFFUSION_MATHJAX_DIR MathJax.js
+          PATHS /usr/share/javascript/mathjax /usr/share/mathjax
+          DOC "MathJax 2, copied into the manual (Debian: libjs-mathjax)")
+if(CGAL_HEAT_DIFFUSION_MATHJAX_DIR)
+  set(CGAL_HEAT_DIFFUSION_MATHJAX_RELPATH "mathjax")
+else()
+  set(CGAL_HEAT_DIFFUSION_MATHJAX_RELPATH "https://cdn.jsdelivr.net/npm/mathjax@2")
+  if(DOXYGEN_FOUND)
+    message(STATUS "Heat_diffusion: MathJax not found (Debian: libjs-mathjax): "
+                   "the manual's formulas will need the network")
+  endif()
+endif()
 configure_file("${PROJECT_SOURCE_DIR}/doc/Heat_diffusion/Doxyfile.in"
                "${CGAL_HEAT_DIFFUSION_DOC_OUTPUT_DIR}/Doxyfile" @ONLY)
 
 if(DOXYGEN_FOUND)
+  set(copy_mathjax "")
+  if(CGAL_HEAT_DIFFUSION_MATHJAX_DIR)
+    set(copy_mathjax COMMAND "${CMAKE_COMMAND}" "-DMATHJAX_DIR=${CGAL_HEAT_DIFFUSION_MATHJAX_DIR}"
+                             "-DHTML_DIR=${CGAL_HEAT_DIFFUSION_DOC_OUTPUT_DIR}/html"
+                             -P "${CMAKE_CURRENT_LIST_DIR}/CGAL_Heat_diffusion_doc_mathjax.cmake")
+  endif()
   add_custom_target(doc
     COMMAND "${DOXYGEN_EXECUTABLE}" "${CGAL_HEAT_DIFFUSION_DOC_OUTPUT_DIR}/Doxyfile"
+    ${copy_mathjax}
     COMMAND "${CMAKE_COMMAND}" -E echo
             "Manual: ${CGAL_HEAT_DIFFUSION_DOC_OUTPUT_DIR}/html/index.html"
     WORKING_DIRECTORY "${CGAL_HEAT_DIFFUSION_DOC_OUTPUT_DIR}"
     COMMENT "Building the Heat_diffusion manual and reference with Doxygen"
     VERBATIM)
   if(BUILD_TESTING)
-    # Runs doxygen (non-zero at the end of the run when it printed a warning), then
-    # checks groups and examples (see the script).
+    # Runs doxygen (non-zero at the end of the run when it printed a warning), copies
+    # MathJax beside the pages, then checks groups and examples (see the script).
     add_test(NAME doc_heat_diffusion
              COMMAND "${CMAKE_COMMAND}" "-DDOXYGEN=${DOXYGEN_EXECUTABLE}"
                      "-DDOXYFILE=${CGAL_HEAT_DIFFUSION_DOC_OUTPUT_DIR}/Doxyfile"
                      "-DSOURCE_DIR=${PROJECT_SOURCE_DIR}"
+                     "-DMATHJAX_DIR=${CGAL_HEAT_DIFFUSION_MATHJAX_DIR}"
                      -P "${CMAKE_CURRENT_LIST_DIR}/CGAL_Heat_diffusion_check_doc.cmake")
     # Also catches the warnings of a Doxygen that does not return an error. It builds
     # the pages that doc_heat_diffusion_in_browser opens (fixture).
