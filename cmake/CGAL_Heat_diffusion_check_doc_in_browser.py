@@ -77,13 +77,14 @@ CHECK_PAGE_JS = r"""
 })()
 """
 
-# MathJax shows "Loading ..." in a box while it loads its menu after typesetting: waits
-# (at most 10 s) until the box is gone, so that the screenshots show the page alone.
+# MathJax shows its progress ("Typesetting math: 100%", "Loading ...") in a box for a
+# moment after typesetting: waits (at most 10 s) until the box is gone, so that the
+# screenshot shows the page alone.
 WAIT_FOR_MATHJAX_MESSAGE_JS = r"""
 (async () => {
   for (let i = 0; i < 100; ++i) {
     const box = document.getElementById('MathJax_Message');
-    if (!box || box.style.display === 'none' || box.offsetParent === null || !box.innerText.trim()) return true;
+    if (!box || getComputedStyle(box).display === 'none' || !box.innerText.trim()) return true;
     await new Promise(r => setTimeout(r, 100));
   }
   return false;
