@@ -54,6 +54,7 @@ if(DOXYGEN_FOUND)
     set_tests_properties(doc_heat_diffusion PROPERTIES
       FAIL_REGULAR_EXPRESSION "[Ww]arning:;[Ee]rror:"
       FIXTURES_SETUP heat_diffusion_doc_html
+      RESOURCE_LOCK heat_diffusion_doc_html
       LABELS doc)
 
     # Every page of the manual opened in headless Chromium without network access: no

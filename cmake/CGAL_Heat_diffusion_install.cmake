@@ -67,5 +67,7 @@ if(BUILD_TESTING)
                    "-DCXX_COMPILER=${CMAKE_CXX_COMPILER}"
                    "-DMESH=${CGAL_HEAT_DIFFUSION_DATA_DIR}/fandisk.off"
                    -P "${CMAKE_CURRENT_LIST_DIR}/CGAL_Heat_diffusion_test_install.cmake")
-  set_tests_properties(install_heat_diffusion PROPERTIES LABELS install TIMEOUT 900)
+  # Not while doc_heat_diffusion rewrites the manual's pages, which it installs.
+  set_tests_properties(install_heat_diffusion PROPERTIES LABELS install TIMEOUT 900
+                       RESOURCE_LOCK heat_diffusion_doc_html)
 endif()
