@@ -5,7 +5,10 @@
 #     (Doxygen silently drops the free functions of an unknown group);
 #   - every `\cgalExample{F}` names a file of examples/;
 #   - every example of examples/Heat_diffusion/ is quoted by the manual (\cgalExample).
-# Usage: cmake -DDOXYGEN=... -DDOXYFILE=... -DSOURCE_DIR=... -P CGAL_Heat_diffusion_check_doc.cmake
+# With MATHJAX_DIR set (not empty), MathJax is copied beside the pages afterwards, as
+# the target `doc` does (CGAL_Heat_diffusion_doc_mathjax.cmake).
+# Usage: cmake -DDOXYGEN=... -DDOXYFILE=... -DSOURCE_DIR=... [-DMATHJAX_DIR=...]
+#              -P CGAL_Heat_diffusion_check_doc.cmake
 foreach(var DOXYGEN DOXYFILE SOURCE_DIR)
   if(NOT DEFINED ${var})
     message(FATAL_ERROR "CGAL_Heat_diffusion_check_doc.cmake: ${var} is not set")
@@ -20,6 +23,10 @@ set(problems 0)
 if(NOT doxygen_result EQUAL 0)
   message("error: doxygen failed (${doxygen_result}): see the warnings above")
   math(EXPR problems "${problems} + 1")
+endif()
+if(MATHJAX_DIR)
+  set(HTML_DIR "${doc_output_dir}/html")
+  include("${CMAKE_CURRENT_LIST_DIR}/CGAL_Heat_diffusion_doc_mathjax.cmake")
 endif()
 
 file(GLOB doc_files "${SOURCE_DIR}/doc/Heat_diffusion/*.txt" "${SOURCE_DIR}/doc/Heat_diffusion/Concepts/*.h")

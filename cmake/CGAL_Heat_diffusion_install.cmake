@@ -1,5 +1,6 @@
 # Installation: `cmake --install build --prefix P` installs the public headers
-# (include/CGAL/Heat_diffusion, internal/ included) and the CMake package config, so
+# (include/CGAL/Heat_diffusion, internal/ included), the manual when it was built
+# (share/doc/CGAL_Heat_diffusion/html) and the CMake package config, so
 # that a separate project can use
 #   find_package(CGAL_Heat_diffusion)
 #   target_link_libraries(my_program PRIVATE CGAL::Heat_diffusion)
@@ -15,6 +16,13 @@ set(CGAL_HEAT_DIFFUSION_INSTALL_CMAKEDIR "${CMAKE_INSTALL_DATADIR}/CGAL_Heat_dif
 install(DIRECTORY "${PROJECT_SOURCE_DIR}/include/CGAL/Heat_diffusion"
         DESTINATION "${CMAKE_INSTALL_INCLUDEDIR}/CGAL"
         FILES_MATCHING PATTERN "*.h")
+
+# The manual, if built (target doc, or the CTest case doc_heat_diffusion): its pages
+# carry MathJax in html/mathjax, so that the installed copy renders its formulas
+# offline, on any machine it is copied to.
+install(DIRECTORY "${PROJECT_BINARY_DIR}/doc/Heat_diffusion/html/"
+        DESTINATION "${CMAKE_INSTALL_DOCDIR}/html"
+        OPTIONAL COMPONENT doc)
 
 install(TARGETS Heat_diffusion EXPORT CGAL_Heat_diffusionTargets)
 install(EXPORT CGAL_Heat_diffusionTargets
@@ -59,5 +67,7 @@ if(BUILD_TESTING)
                    "-DCXX_COMPILER=${CMAKE_CXX_COMPILER}"
                    "-DMESH=${CGAL_HEAT_DIFFUSION_DATA_DIR}/fandisk.off"
                    -P "${CMAKE_CURRENT_LIST_DIR}/CGAL_Heat_diffusion_test_install.cmake")
-  set_tests_properties(install_heat_diffusion PROPERTIES LABELS install TIMEOUT 900)
+  # Not while doc_heat_diffusion rewrites the manual's pages, which it installs.
+  set_tests_properties(install_heat_diffusion PROPERTIES LABELS install TIMEOUT 900
+                       RESOURCE_LOCK heat_diffusion_doc_html)
 endif()

@@ -35,7 +35,7 @@ cmake -S . -B "$build" -G Ninja -DCMAKE_BUILD_TYPE=Debug -DCGAL_DO_NOT_WARN_ABOU
 # enhancement and denoising through test_cli (every subcommand, both kernels) and the
 # fuzz target, the kernel and diffusion through test_heat_kernel_and_diffusion.
 # Every other suite runs, and only what they need is built.
-excluded='^(doc_heat_diffusion|install_heat_diffusion|test_coarse_level|test_local_heat_kernel|test_applications)$'
+excluded='^(doc_heat_diffusion|doc_heat_diffusion_in_browser|install_heat_diffusion|test_coarse_level|test_local_heat_kernel|test_applications)$'
 targets=(heat_diffusion fuzz_off_pipeline)
 for t in $(cd "$build" && ctest -N | sed -n 's/^ *Test *#[0-9]*: //p' | grep -vE "$excluded"); do
   case $t in test_cli|test_hostile_cli|fuzz_regressions) ;; *) targets+=("$t") ;; esac
