@@ -1,7 +1,7 @@
 #!/usr/bin/env bash
 # Makes the user manual's figures (doc/Heat_diffusion/fig/*.png) with the command-line
 # tool and scripts/render.py, on CGAL's fandisk: what sigma, t, m and k do, the heat
-# conservation plot, and one figure per application. Run it after scripts/setup.sh;
+# conservation plot, and one figure per application (shape filtering on armadillo too). Run it after scripts/setup.sh;
 # the figures are committed, so only a change of the maths needs a new run.
 #   bash scripts/manual_figures.sh [OUTPUT_DIR]   (default doc/Heat_diffusion/fig)
 # HEAT_DIFFUSION_BUILD_DIR names another build folder (default build).
@@ -90,5 +90,12 @@ picture hd_decomposition.png "$work"/bands_band{1,2,3}.ply "$work/bands_residual
 "$tool" ncc "$work/enhanced.off" -o "$work/enhanced_ns.ply" --quiet
 picture hd_enhancement.png "$work/smoothed_ns.ply" "$work/clean_ns.ply" "$work/enhanced_ns.ply" \
   --titles "weights 0, 0, 1|input|weights 1, 3, 3"
+# an organic mesh with detail: armadillo's back, shaded (the filters' defaults)
+armadillo=$build/data/meshes/armadillo.off
+"$tool" enhance "$armadillo" --weights 0,0,1 -o "$work/armadillo_smoothed.off" --quiet
+"$tool" enhance "$armadillo" --weights 1,3,3 -o "$work/armadillo_enhanced.off" --quiet
+"$py" scripts/render.py mesh "$work/armadillo_smoothed.off" "$armadillo" "$work/armadillo_enhanced.off" \
+  --titles "smoothing, weights 0, 0, 1|input (armadillo)|enhancement, weights 1, 3, 3" \
+  --size 3.2 --dpi 90 --zoom 2.2 --view 10,90 -o "$fig/hd_enhancement_armadillo.png"
 
 ls -l "$fig"

@@ -132,6 +132,21 @@ if has("fandisk_heat.png"):
         add("")
         table(["diffusion", "total heat at k = 0", "largest drift from the heat of F^0"], rows)
 
+ones = [(n, load(f"fandisk_ones_{n}")) for n in ("balanced", "columns")]
+if any(o for _, o in ones):
+    section("A constant field", [])
+    add("A field of ones diffused on fandisk (sigma 0.1, t = 1): the default operator is doubly stochastic "
+        "and keeps it; the paper's column normalisation conserves its total but not its values.")
+    add("")
+    rows = []
+    for n, o in ones:
+        if not o or "minimum" not in o:
+            continue
+        for k in sorted(o["minimum"], key=int):
+            rows.append([f"`--normalization {n}`", k, f"{o['minimum'][k]:.6g}", f"{o['maximum'][k]:.6g}",
+                         f"{o['total_heat'][k]:.6g}"])
+    table(["operator", "k", "min F^k", "max F^k", "total heat"], rows)
+
 feat = load("fandisk_features")
 if feat and has("fandisk_features.png"):
     section("Features at the scales k = 0, 10, 40", [("features", "fandisk_features.png")], feat, "`features`")
@@ -167,6 +182,16 @@ if enh and has("fandisk_enhanced.png"):
     add(f"NS variance {enh.get('ns_variance_before', NAN):.3g} before, "
         f"{enh.get('ns_variance_after', NAN):.3g} after; largest vertex displacement "
         f"{enh.get('max_displacement_relative', NAN):.2%} of the bounding-box diagonal.")
+    add("")
+
+arm, arm_smooth = load("armadillo_enhance"), load("armadillo_smooth")
+if arm and has("armadillo_filters.png"):
+    section("Shape filtering of armadillo (the paper's Fig. 10)", [("smoothed, input, enhanced", "armadillo_filters.png")],
+            arm, "`enhance`")
+    add(f"Enhancement (1, 3, 3): NS variance {arm.get('ns_variance_after', NAN) / arm.get('ns_variance_before', NAN):.2f} "
+        f"times the input's; largest vertex displacement {arm.get('max_displacement_relative', NAN):.2%} of the "
+        "bounding-box diagonal." + (f" Smoothing (0, 0, 1): {arm_smooth.get('ns_variance_after', NAN) / "
+                                      f"arm_smooth.get('ns_variance_before', NAN):.2f} times." if arm_smooth else ""))
     add("")
 
 if timings:

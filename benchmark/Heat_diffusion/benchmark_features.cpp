@@ -17,17 +17,19 @@
 //          the truncated kernel is accurate): the share of the full features at k = 10
 //          and 40 the coarse path finds with their type within the 2-ring, and the reverse.
 // Table 4 (--shape-filter, alone): the shape filters of filter_shape() (the paper's
-//          Fig. 10, built on the same diffusion) by anchor weight and steps per level,
-//          sigma = 0.1: for the enhancement (1, 3, 3), the NS variance of its target
+//          Fig. 10, built on the same diffusion) by sigma, steps per level and anchor
+//          weight: for the enhancement (1, 3, 3), the NS variance of its target
 //          (the re-synthesised NS) and of the result, relative to the input's, the share
 //          of the asked change reached, the largest vertex displacement (% of the
 //          bounding-box diagonal) and whether the result self-intersects; for the
 //          smoothing (0, 0, 1), the NS variance ratio and self-intersections. The
 //          defaults of filter_shape() were chosen from this table.
 //
-// Usage: benchmark_features [DATA_DIR] [--seeds S] [--meshes a.off,b.off] [--shape-filter]
+// Usage: benchmark_features [DATA_DIR] [--seeds S] [--meshes a.off,b.off]
+//                           [--shape-filter [--sigmas S1,S2,...] [--steps K1,K2,...]]
 //   S (default 3); meshes (default fandisk.off,armadillo.off; with --shape-filter,
-//   armadillo.off,bunny00.off,elephant.off,fandisk.off). A few minutes on 2 cores.
+//   armadillo.off,bunny00.off,elephant.off,fandisk.off); the sigmas (default 0.1) and
+//   steps per level (default 2,5) of table 4. A few minutes on 2 cores.
 
 #include <CGAL/Exact_predicates_inexact_constructions_kernel.h>
 #include <CGAL/Heat_diffusion/Edge_weighted_heat_kernel.h>
@@ -133,12 +135,13 @@ double ns_variance(const Mesh& mesh)
   return squares / n - (sum / n) * (sum / n);
 }
 
-void shape_filter_table(const std::string& data, const std::vector<std::string>& meshes)
+void shape_filter_table(const std::string& data, const std::vector<std::string>& meshes,
+                        const std::vector<double>& sigmas, const std::vector<double>& step_counts)
 {
-  std::printf("Table 4: filter_shape(), sigma = 0.1, t = 1, local kernel: enhancement (1, 3, 3) and smoothing (0, 0, 1)\n");
-  std::printf("| mesh | steps per level | anchor weight | target NS variance | enhanced | reached | largest displacement"
+  std::printf("Table 4: filter_shape(), t = 1, local kernel: enhancement (1, 3, 3) and smoothing (0, 0, 1)\n");
+  std::printf("| mesh | sigma | steps per level | anchor weight | target NS variance | enhanced | reached | largest displacement"
               " | enhanced self-intersects | smoothed NS variance | smoothed self-intersects | s per filter |\n"
-              "|---|---|---|---|---|---|---|---|---|---|---|\n");
+              "|---|---|---|---|---|---|---|---|---|---|---|---|\n");
   for(const std::string& name : meshes)
   {
     Mesh mesh;
@@ -148,47 +151,52 @@ void shape_filter_table(const std::string& data, const std::vector<std::string>&
     const auto box = CGAL::bounding_box(mesh.points().begin(), mesh.points().end());
     const double diagonal = std::sqrt(CGAL::to_double(CGAL::squared_distance(box.min(), box.max())));
     const bool input_intersects = PMP::does_self_intersect(mesh);
-    for(std::size_t steps : {2, 5})
-    {
-      // the target: the NS re-synthesised as filter_shape() does
-      Mesh copy = mesh;
-      auto ns = copy.add_property_map<Vertex, double>("v:ns", 0.).first;
-      HD::compute_normal_signature(copy, ns);
-      std::vector<Mesh::Property_map<Vertex, double> > bands;
-      for(int j = 1; j <= 3; ++j)
-        bands.push_back(copy.add_property_map<Vertex, double>("v:d" + std::to_string(j), 0.).first);
-      auto target = copy.add_property_map<Vertex, double>("v:target", 0.).first;
-      HD::decompose_field(copy, ns, bands, target, HD::parameters::steps_per_level(steps));
-      HD::synthesize_field(copy, bands, target, std::vector<double>{1., 3., 3.}, target);
-      double sum = 0, squares = 0;
-      for(Vertex v : copy.vertices())
+    for(double sigma : sigmas)
+      for(double step_count : step_counts)
       {
-        sum += target[v];
-        squares += target[v] * target[v];
+        const std::size_t steps = std::size_t(step_count);
+        // the target: the NS re-synthesised as filter_shape() does
+        Mesh copy = mesh;
+        auto ns = copy.add_property_map<Vertex, double>("v:ns", 0.).first;
+        HD::compute_normal_signature(copy, ns);
+        std::vector<Mesh::Property_map<Vertex, double> > bands;
+        for(int j = 1; j <= 3; ++j)
+          bands.push_back(copy.add_property_map<Vertex, double>("v:d" + std::to_string(j), 0.).first);
+        auto target = copy.add_property_map<Vertex, double>("v:target", 0.).first;
+        HD::decompose_field(copy, ns, bands, target,
+                            HD::parameters::combine(HD::parameters::sigma(sigma), HD::parameters::steps_per_level(steps)));
+        HD::synthesize_field(copy, bands, target, std::vector<double>{1., 3., 3.}, target);
+        double sum = 0, squares = 0;
+        for(Vertex v : copy.vertices())
+        {
+          sum += target[v];
+          squares += target[v] * target[v];
+        }
+        const double n = double(copy.number_of_vertices());
+        const double target_variance = squares / n - (sum / n) * (sum / n);
+        for(double anchor : {1., 0.1, 0.05, 0.03, 0.02, 0.01})
+        {
+          const auto np = HD::parameters::combine(HD::parameters::sigma(sigma), HD::parameters::steps_per_level(steps),
+                                                  HD::parameters::anchor_weight(anchor));
+          Mesh enhanced = mesh, smoothed = mesh;
+          const auto start = std::chrono::steady_clock::now();
+          HD::filter_shape(enhanced, std::vector<double>{1., 3., 3.}, np);
+          const double seconds = std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
+          HD::filter_shape(smoothed, std::vector<double>{0., 0., 1.}, np);
+          double moved = 0;
+          for(Vertex v : mesh.vertices())
+            moved = (std::max)(moved, std::sqrt(CGAL::to_double(CGAL::squared_distance(mesh.point(v), enhanced.point(v)))));
+          const double enhanced_variance = ns_variance(enhanced);
+          std::printf("| %s | %g | %zu | %g | %.3f | %.3f | %.2f | %.2f %% | %s | %.2f | %s | %.2f |\n", name.c_str(), sigma,
+                      steps, anchor,
+                      target_variance / v0, enhanced_variance / v0, (enhanced_variance - v0) / (target_variance - v0),
+                      100 * moved / diagonal,
+                      input_intersects ? "(input does)" : PMP::does_self_intersect(enhanced) ? "yes" : "no",
+                      ns_variance(smoothed) / v0,
+                      input_intersects ? "(input does)" : PMP::does_self_intersect(smoothed) ? "yes" : "no", seconds);
+          std::fflush(stdout);
+        }
       }
-      const double n = double(copy.number_of_vertices());
-      const double target_variance = squares / n - (sum / n) * (sum / n);
-      for(double anchor : {1., 0.1, 0.05, 0.03, 0.02, 0.01})
-      {
-        const auto np = HD::parameters::combine(HD::parameters::steps_per_level(steps), HD::parameters::anchor_weight(anchor));
-        Mesh enhanced = mesh, smoothed = mesh;
-        const auto start = std::chrono::steady_clock::now();
-        HD::filter_shape(enhanced, std::vector<double>{1., 3., 3.}, np);
-        const double seconds = std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
-        HD::filter_shape(smoothed, std::vector<double>{0., 0., 1.}, np);
-        double moved = 0;
-        for(Vertex v : mesh.vertices())
-          moved = (std::max)(moved, std::sqrt(CGAL::to_double(CGAL::squared_distance(mesh.point(v), enhanced.point(v)))));
-        const double enhanced_variance = ns_variance(enhanced);
-        std::printf("| %s | %zu | %g | %.3f | %.3f | %.2f | %.2f %% | %s | %.2f | %s | %.2f |\n", name.c_str(), steps, anchor,
-                    target_variance / v0, enhanced_variance / v0, (enhanced_variance - v0) / (target_variance - v0),
-                    100 * moved / diagonal,
-                    input_intersects ? "(input does)" : PMP::does_self_intersect(enhanced) ? "yes" : "no",
-                    ns_variance(smoothed) / v0,
-                    input_intersects ? "(input does)" : PMP::does_self_intersect(smoothed) ? "yes" : "no", seconds);
-        std::fflush(stdout);
-      }
-    }
   }
 }
 
@@ -198,11 +206,23 @@ int main(int argc, char* argv[])
   unsigned seeds = 3;
   std::vector<std::string> meshes = {"fandisk.off", "armadillo.off"};
   bool shape_filter = false, meshes_given = false;
+  std::vector<double> sigmas = {0.1}, step_counts = {2, 5};
+  auto numbers = [](const char* text) {
+    std::vector<double> values;
+    std::stringstream list(text);
+    for(std::string value; std::getline(list, value, ',');)
+      values.push_back(std::atof(value.c_str()));
+    return values;
+  };
   for(int i = 1; i < argc; ++i)
   {
     const std::string arg = argv[i];
     if(arg == "--shape-filter")
       shape_filter = true;
+    else if(arg == "--sigmas" && i + 1 < argc)
+      sigmas = numbers(argv[++i]);
+    else if(arg == "--steps" && i + 1 < argc)
+      step_counts = numbers(argv[++i]);
     else if(arg == "--seeds" && i + 1 < argc)
       seeds = unsigned(std::atoi(argv[++i]));
     else if(arg == "--meshes" && i + 1 < argc)
@@ -217,7 +237,8 @@ int main(int argc, char* argv[])
       data = arg;
     else
     {
-      std::fprintf(stderr, "usage: %s [DATA_DIR] [--seeds S] [--meshes a.off,b.off] [--shape-filter]\n", argv[0]);
+      std::fprintf(stderr, "usage: %s [DATA_DIR] [--seeds S] [--meshes a.off,b.off] [--shape-filter [--sigmas S1,S2]"
+                           " [--steps K1,K2]]\n", argv[0]);
       return 2;
     }
   }
@@ -226,7 +247,8 @@ int main(int argc, char* argv[])
     if(shape_filter)
     {
       shape_filter_table(data, meshes_given ? meshes : std::vector<std::string>{"armadillo.off", "bunny00.off",
-                                                                                 "elephant.off", "fandisk.off"});
+                                                                                 "elephant.off", "fandisk.off"},
+                         sigmas, step_counts);
       return 0;
     }
     const Kernel_setting spectral{"spectral m=150", HD::Heat_kernel_method::spectral, 0};

@@ -218,7 +218,9 @@ void check_invariance()
 
 // With 0.1 mean-edge-length noise along the normals, the clean features at k = 10
 // are re-detected, with their type, within their 2-ring. Three noise seeds; the
-// paper's c = 0.8 keeps few features, so c = 0.5 and 0.2 are measured as well.
+// paper's c = 0.8 keeps few features, so c = 0.5 and 0.2 are measured as well. With
+// the default (local) kernel: the truncated spectral kernel at t = 1 re-detects far
+// fewer (benchmark_features, table 2), and is not what a user gets by default.
 void check_noise_robustness()
 {
   const Mesh clean = test_support::load<Mesh>("fandisk.off");
@@ -227,7 +229,8 @@ void check_noise_robustness()
     Mesh mesh = input;
     auto ns = mesh.add_property_map<Vertex, double>("v:ns", 0.).first;
     HD::compute_normal_signature(mesh, ns);
-    const Diffusion diffusion(mesh, feature_parameters());
+    const Diffusion diffusion(mesh, HD::parameters::combine(HD::parameters::sigma(1.), HD::parameters::time(1.)));
+    CHECK(diffusion.kernel_method() == HD::Heat_kernel_method::local);
     return HD::detect_multiscale_features(diffusion, ns, {10}, HD::parameters::feature_threshold(threshold)).front();
   };
   for(double threshold : {0.8, 0.5, 0.2})
