@@ -309,6 +309,26 @@ struct Diffusion_options
   bool scale_invariant = false;
 };
 
+// An optional whole-number argument (None: not given), with a ValueError that names it.
+long long whole_number(const py::object& value, const std::string& function, const std::string& name)
+{
+  if(py::isinstance<py::bool_>(value) || !PyIndex_Check(value.ptr()))
+    invalid(function, name + " must be a whole number or None, not " + type_name(value));
+  return py::reinterpret_steal<py::object>(PyNumber_Index(value.ptr())).cast<long long>();
+}
+
+std::vector<double> number_list(const py::object& value, const std::string& function, const std::string& name)
+{
+  try
+  {
+    return value.cast<std::vector<double> >();
+  }
+  catch(const py::cast_error&)
+  {
+    invalid(function, name + " must be a sequence of numbers, not " + type_name(value));
+  }
+}
+
 Diffusion_options diffusion_options(const std::string& function, double sigma, double time, const py::object& kernel,
                                     const py::object& m, const py::object& coarse, bool scale_invariant)
 {
@@ -318,14 +338,14 @@ Diffusion_options diffusion_options(const std::string& function, double sigma, d
   o.scale_invariant = scale_invariant;
   if(!m.is_none())
   {
-    const long long value = m.cast<long long>();
+    const long long value = whole_number(m, function, "m");
     if(value < 1)
       invalid(function, "m (number_of_eigenpairs) must be at least 1, not " + std::to_string(value));
     o.eigenpairs = std::size_t(value);
   }
   if(!coarse.is_none())
   {
-    const long long value = coarse.cast<long long>();
+    const long long value = whole_number(coarse, function, "coarse");
     if(value < 0 || (value > 0 && value < 4))
       invalid(function, "coarse (coarse_vertex_count) must be 0 (none) or at least 4, not " + std::to_string(value));
     o.coarse = double(value);
@@ -335,6 +355,8 @@ Diffusion_options diffusion_options(const std::string& function, double sigma, d
     o.method = eigenpairs_requested ? HD::Heat_kernel_method::spectral : HD::Heat_kernel_method::local;
   else
   {
+    if(!py::isinstance<py::str>(kernel))
+      invalid(function, "kernel must be 'local', 'spectral' or None, not " + type_name(kernel));
     const std::string name = kernel.cast<std::string>();
     if(name == "local")
       o.method = HD::Heat_kernel_method::local;
@@ -651,7 +673,7 @@ py::array_t<double> synthesize(py::object bands_object, py::object residual_obje
   if(!is_float64(bands_array))
     invalid(function, "bands must be float64, not " + dtype_text(bands_array));
   const std::vector<double> weights =
-      HD::internal::checked_weights(weights_object.cast<std::vector<double> >(), "synthesize");
+      HD::internal::checked_weights(number_list(weights_object, function, "weights"), "synthesize");
   const std::size_t levels = std::size_t(bands_array.shape(0));
   if(weights.size() != levels)
   {
@@ -678,7 +700,7 @@ py::array_t<double> filter_shape(py::object V, py::object F, py::object weights_
 {
   auto mesh = make_mesh(V, F, "filter_shape");
   const Diffusion_options o = diffusion_options("filter_shape", sigma, time, kernel, m, coarse, scale_invariant);
-  const std::vector<double> weights = weights_object.cast<std::vector<double> >();
+  const std::vector<double> weights = number_list(weights_object, "filter_shape", "weights");
   Python_progress guard(std::move(progress));
   const auto np = HD::parameters::combine(diffusion_parameters(o, guard.callback()),
                                           HD::parameters::steps_per_level(steps_per_level),
@@ -720,8 +742,10 @@ py::array_t<double> denoise(py::object V, py::object F, const std::string& metho
     invalid(function, "method must be 'normal_filtering' or 'signature_diffusion', not '" + method + "'");
   const bool filtering = denoising == HD::Denoising_method::normal_filtering;
   // The defaults of denoise_mesh(), which depend on the method.
-  const long long iterations = iterations_object.is_none() ? (filtering ? 100 : 2) : iterations_object.cast<long long>();
-  const long long steps = steps_object.is_none() ? (filtering ? 2 : 1) : steps_object.cast<long long>();
+  const long long iterations = iterations_object.is_none() ? (filtering ? 100 : 2)
+                                                          : whole_number(iterations_object, function, "number_of_iterations");
+  const long long steps =
+      steps_object.is_none() ? (filtering ? 2 : 1) : whole_number(steps_object, function, "number_of_steps");
   if(iterations < 0)
     invalid(function, "number_of_iterations must not be negative");
   if(steps < 0)
@@ -738,6 +762,8 @@ py::array_t<double> denoise(py::object V, py::object F, const std::string& metho
     guard.run([&] { HD::denoise_mesh(*mesh, np); });
   else
   {
+    if(!py::isinstance<py::float_>(normal_sigma) && !py::isinstance<py::int_>(normal_sigma))
+      invalid(function, "normal_sigma must be a number or None, not " + type_name(normal_sigma));
     const double value = normal_sigma.cast<double>();
     guard.run([&] { HD::denoise_mesh(*mesh, HD::parameters::combine(np, HD::parameters::normal_sigma(value))); });
   }

@@ -7,7 +7,7 @@ import numpy as np
 import pytest
 
 import cgal_heat_diffusion as hd
-from conftest import read_ply_vertices, run_tool, write_off
+from conftest import read_ply_vertices, run_tool, write_ply
 
 MESHES = ["fandisk.off", "armadillo.off"]
 
@@ -87,8 +87,8 @@ def test_large_mesh_in_input_order(mesh, tool, tmp_path):
     V0, F0, _ = mesh("armadillo.off")
     V, F = hd.loop_subdivision(V0, F0, 1)
     assert len(V) >= 100000
-    write_off(tmp_path / "large.off", V, F)
-    run_tool(tool, "diffuse", "large.off", "-k", "10", "-o", "l", "--quiet", cwd=tmp_path)
+    write_ply(tmp_path / "large.ply", V, F)
+    run_tool(tool, "diffuse", "large.ply", "-k", "10", "-o", "l", "--quiet", cwd=tmp_path)
     ply = read_ply_vertices(tmp_path / "l_k10.ply")
     assert np.array_equal(np.column_stack([ply["x"], ply["y"], ply["z"]]), V)
     diffusion = hd.HeatDiffusion(V, F)

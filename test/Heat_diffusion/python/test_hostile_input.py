@@ -240,3 +240,20 @@ def test_hostile_file(name):
             f = result.diffuse(result.normal_signature(), [0, 5])
             assert np.all(np.isfinite(f))
             assert abs(f[1].sum() - f[0].sum()) <= 1e-12 * max(1.0, np.abs(f[0]).sum())
+
+
+def test_arguments_of_the_wrong_type():
+    V, F = TETRA_V, TETRA_F
+    cases = [
+        (lambda: hd.HeatDiffusion(V, F, m="many"), "m must be a whole number or None"),
+        (lambda: hd.HeatDiffusion(V, F, m=2.5), "m must be a whole number or None"),
+        (lambda: hd.HeatDiffusion(V, F, coarse=[4]), "coarse must be a whole number or None"),
+        (lambda: hd.HeatDiffusion(V, F, kernel=1), "kernel must be 'local', 'spectral' or None"),
+        (lambda: hd.filter_shape(V, F, "13"), "weights must be a sequence of numbers"),
+        (lambda: hd.synthesize(np.zeros((1, 4)), np.zeros(4), None), "weights must be a sequence of numbers"),
+        (lambda: hd.denoise(V, F, number_of_iterations=1.5), "number_of_iterations must be a whole number"),
+        (lambda: hd.denoise(V, F, normal_sigma="wide"), "normal_sigma must be a number or None"),
+    ]
+    for function, message in cases:
+        with pytest.raises(ValueError, match=message):
+            function()
