@@ -226,3 +226,25 @@ def test_gil_is_released(mesh):
     # with the GIL held for the whole construction, this thread would run only at the
     # few progress calls
     assert ticks > 20
+
+
+def test_keyboard_interrupt_stops_a_long_diffusion(diffusions):
+    """A diffusion of many steps stops soon after Ctrl-C, not at its end."""
+    d = diffusions("armadillo.off")
+    ns = d.normal_signature()
+    start = time.perf_counter()
+    d.diffuse(ns, 200)
+    per_200 = time.perf_counter() - start
+    main = threading.get_ident()
+    timer = threading.Timer(0.2, lambda: signal.pthread_kill(main, signal.SIGINT))
+    start = time.perf_counter()
+    timer.start()
+    try:
+        with pytest.raises(KeyboardInterrupt):
+            d.diffuse(ns, 200000)  # 1000 times the steps timed above
+    finally:
+        timer.cancel()
+    elapsed = time.perf_counter() - start
+    assert elapsed < 100 * per_200 + 1.0, f"{elapsed:.1f} s, {per_200:.3f} s per 200 steps"
+    # the object is intact
+    assert np.array_equal(d.diffuse(ns, 3), d.diffuse(ns, [3])[0])
