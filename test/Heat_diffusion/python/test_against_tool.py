@@ -97,3 +97,9 @@ def test_large_mesh_in_input_order(mesh, tool, tmp_path):
     close(diffusion.diffuse(ns, 10), ply["field"])
     A = diffusion.operator_matrix()
     close(A @ ns, diffusion.diffuse(ns, 1))
+    assert np.max(np.abs(np.asarray(A.sum(axis=0)).ravel() - 1.0)) <= 1e-12
+    # column j is the diffusion of the heat of vertex j (of V), row i the heat vertex i receives
+    for j in (0, len(V) // 2, len(V) - 1):
+        unit = np.zeros(len(V))
+        unit[j] = 1.0
+        close(A[:, [j]].toarray().ravel(), diffusion.diffuse(unit, 1))
