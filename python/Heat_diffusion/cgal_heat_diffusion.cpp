@@ -329,6 +329,17 @@ std::vector<double> number_list(const py::object& value, const std::string& func
   }
 }
 
+// An optional number (None: the C++ function's own default, which then stays the
+// package's to choose: the binding does not copy it).
+std::optional<double> optional_number(const py::object& value, const std::string& function, const std::string& name)
+{
+  if(value.is_none())
+    return std::nullopt;
+  if(py::isinstance<py::bool_>(value) || !(py::isinstance<py::float_>(value) || PyIndex_Check(value.ptr())))
+    invalid(function, name + " must be a number or None, not " + type_name(value));
+  return value.cast<double>();
+}
+
 Diffusion_options diffusion_options(const std::string& function, double sigma, double time, const py::object& kernel,
                                     const py::object& m, const py::object& coarse, bool scale_invariant)
 {
@@ -624,11 +635,13 @@ public:
     return features_list(features);
   }
 
-  py::tuple decompose(py::object field, std::size_t levels, double steps_per_level) const
+  py::tuple decompose(py::object field, std::size_t levels, py::object steps_object) const
   {
     const std::size_t n = number_of_vertices();
     std::vector<double> values = field.is_none() ? normal_signature().cast<std::vector<double> >()
                                                  : field_array(field, n, "HeatDiffusion.decompose");
+    const std::optional<double> steps_per_level =
+        optional_number(steps_object, "HeatDiffusion.decompose", "steps_per_level");
     py::array_t<double> bands({py::ssize_t(levels), py::ssize_t(n)});
     py::array_t<double> residual(static_cast<py::ssize_t>(n));
     double* band_data = bands.mutable_data();
@@ -637,8 +650,12 @@ public:
       std::vector<Input_order_field> maps;
       for(std::size_t j = 0; j < levels; ++j)
         maps.push_back(Input_order_field{band_data + j * n});
-      HD::decompose_field(*diffusion_, Input_order_field{values.data()}, maps, Input_order_field{residual_data},
-                          HD::parameters::steps_per_level(steps_per_level));
+      // Only if given: decompose_field() keeps its own default.
+      if(steps_per_level)
+        HD::decompose_field(*diffusion_, Input_order_field{values.data()}, maps, Input_order_field{residual_data},
+                            HD::parameters::steps_per_level(*steps_per_level));
+      else
+        HD::decompose_field(*diffusion_, Input_order_field{values.data()}, maps, Input_order_field{residual_data});
     });
     return py::make_tuple(bands, residual);
   }
@@ -684,7 +701,7 @@ py::list multiscale_features(py::object V, py::object F, py::object field, py::o
   return diffusion.features(field, steps, feature_threshold);
 }
 
-py::tuple decompose(py::object V, py::object F, py::object field, std::size_t levels, double steps_per_level,
+py::tuple decompose(py::object V, py::object F, py::object field, std::size_t levels, py::object steps_per_level,
                     double sigma, double time, py::object kernel, py::object m, py::object coarse,
                     bool scale_invariant, py::object progress)
 {
@@ -729,18 +746,29 @@ py::array_t<double> synthesize(py::object bands_object, py::object residual_obje
   return make_vector(std::vector<double>(result.data(), result.data() + result.size()));
 }
 
-py::array_t<double> filter_shape(py::object V, py::object F, py::object weights_object, double steps_per_level,
-                                 double anchor_weight, double sigma, double time, py::object kernel, py::object m,
+py::array_t<double> filter_shape(py::object V, py::object F, py::object weights_object, py::object steps_object,
+                                 py::object anchor_object, double sigma, double time, py::object kernel, py::object m,
                                  py::object coarse, bool scale_invariant, py::object progress)
 {
-  auto mesh = make_mesh(V, F, "filter_shape");
-  const Diffusion_options o = diffusion_options("filter_shape", sigma, time, kernel, m, coarse, scale_invariant);
-  const std::vector<double> weights = number_list(weights_object, "filter_shape", "weights");
+  const std::string function = "filter_shape";
+  auto mesh = make_mesh(V, F, function);
+  const Diffusion_options o = diffusion_options(function, sigma, time, kernel, m, coarse, scale_invariant);
+  const std::vector<double> weights = number_list(weights_object, function, "weights");
+  const std::optional<double> steps_per_level = optional_number(steps_object, function, "steps_per_level");
+  const std::optional<double> anchor_weight = optional_number(anchor_object, function, "anchor_weight");
   Python_progress guard(std::move(progress));
-  const auto np = HD::parameters::combine(diffusion_parameters(o, guard.callback()),
-                                          HD::parameters::steps_per_level(steps_per_level),
-                                          HD::parameters::anchor_weight(anchor_weight));
-  guard.run([&] { HD::filter_shape(*mesh, weights, np); });
+  const auto np = diffusion_parameters(o, guard.callback());
+  auto run = [&](const auto& parameters) { guard.run([&] { HD::filter_shape(*mesh, weights, parameters); }); };
+  // Only the parameters given are passed: filter_shape() keeps its own defaults.
+  if(steps_per_level && anchor_weight)
+    run(HD::parameters::combine(np, HD::parameters::steps_per_level(*steps_per_level),
+                                HD::parameters::anchor_weight(*anchor_weight)));
+  else if(steps_per_level)
+    run(HD::parameters::combine(np, HD::parameters::steps_per_level(*steps_per_level)));
+  else if(anchor_weight)
+    run(HD::parameters::combine(np, HD::parameters::anchor_weight(*anchor_weight)));
+  else
+    run(np);
   return mesh_points(*mesh);
 }
 
@@ -892,8 +920,9 @@ PYBIND11_MODULE(cgal_heat_diffusion, module)
            "Convex and concave features of the diffused field (default: the NS) at each k of steps: a list\n"
            "of dicts {'steps', 'convex', 'concave'} with sorted vertex indices.")
       .def("decompose", &Heat_diffusion::decompose, py::arg("field") = py::none(), py::arg("levels") = 3,
-           py::kw_only(), py::arg("steps_per_level") = 5,
-           "Detail bands (levels, n) and residual (n,) of the field (default: the NS), eq. 24.")
+           py::kw_only(), py::arg("steps_per_level") = py::none(),
+           "Detail bands (levels, n) and residual (n,) of the field (default: the NS), eq. 24;\n"
+           "steps_per_level None: decompose_field()'s default.")
       .def_property_readonly("number_of_vertices", &Heat_diffusion::number_of_vertices)
       .def_property_readonly("time", &Heat_diffusion::time)
       .def_property_readonly("kernel", &Heat_diffusion::kernel, "'local' or 'spectral'");
@@ -910,7 +939,7 @@ PYBIND11_MODULE(cgal_heat_diffusion, module)
               diffusion_arguments_doc)
                  .c_str());
   module.def("decompose", &decompose, py::arg("V"), py::arg("F"), py::arg("field") = py::none(),
-             py::arg("levels") = 3, py::kw_only(), py::arg("steps_per_level") = 5, py::arg("sigma") = 0.1,
+             py::arg("levels") = 3, py::kw_only(), py::arg("steps_per_level") = py::none(), py::arg("sigma") = 0.1,
              py::arg("time") = 1.0, py::arg("kernel") = py::none(), py::arg("m") = py::none(),
              py::arg("coarse") = py::none(), py::arg("scale_invariant") = false, py::arg("progress") = py::none(),
              (std::string("Detail bands (levels, n) and residual (n,) of the field (default: the NS).\n") +
@@ -919,10 +948,11 @@ PYBIND11_MODULE(cgal_heat_diffusion, module)
   module.def("synthesize", &synthesize, py::arg("bands"), py::arg("residual"), py::arg("weights"),
              "residual + sum_j weights[j] bands[j] (eq. 26).");
   module.def("filter_shape", &filter_shape, py::arg("V"), py::arg("F"), py::arg("weights"), py::kw_only(),
-             py::arg("steps_per_level") = 5, py::arg("anchor_weight") = 1.0, py::arg("sigma") = 0.1,
+             py::arg("steps_per_level") = py::none(), py::arg("anchor_weight") = py::none(), py::arg("sigma") = 0.1,
              py::arg("time") = 1.0, py::arg("kernel") = py::none(), py::arg("m") = py::none(),
              py::arg("coarse") = py::none(), py::arg("scale_invariant") = false, py::arg("progress") = py::none(),
-             (std::string("New vertex positions (n, 3): the NS bands reweighted, the shape reconstructed.\n") +
+             (std::string("New vertex positions (n, 3): the NS bands reweighted, the shape reconstructed;\n"
+                         "steps_per_level, anchor_weight None: filter_shape()'s defaults.\n") +
               diffusion_arguments_doc)
                  .c_str());
   module.def("heat_kernel_signature", &heat_kernel_signature, py::arg("V"), py::arg("F"), py::kw_only(),

@@ -99,6 +99,7 @@ BAD_PARAMETERS = {
     "local with m": (lambda V, F: hd.HeatDiffusion(V, F, kernel="local", m=10), "kernel='local' computes none"),
     "feature threshold": (lambda V, F: hd.multiscale_features(V, F, feature_threshold=2.0), "threshold"),
     "steps per level": (lambda V, F: hd.decompose(V, F, steps_per_level=0), "steps_per_level"),
+    "steps per level 2.5": (lambda V, F: hd.filter_shape(V, F, [1.0], steps_per_level=2.5), "steps_per_level"),
     "weights NaN": (lambda V, F: hd.filter_shape(V, F, [1.0, float("nan")]), "weight 1 is nan"),
     "anchor weight": (lambda V, F: hd.reconstruct(V, F, np.zeros(len(V)), anchor_weight=-1.0), "anchor_weight"),
     "ns length": (lambda V, F: hd.reconstruct(V, F, np.zeros(3)), r"ns must have shape \(4,\)"),
@@ -253,6 +254,9 @@ def test_arguments_of_the_wrong_type():
         (lambda: hd.synthesize(np.zeros((1, 4)), np.zeros(4), None), "weights must be a sequence of numbers"),
         (lambda: hd.denoise(V, F, number_of_iterations=1.5), "number_of_iterations must be a whole number"),
         (lambda: hd.denoise(V, F, normal_sigma="wide"), "normal_sigma must be a number or None"),
+        (lambda: hd.filter_shape(V, F, [1.0], steps_per_level="5"), "steps_per_level must be a number or None"),
+        (lambda: hd.filter_shape(V, F, [1.0], anchor_weight=[1.0]), "anchor_weight must be a number or None"),
+        (lambda: hd.decompose(V, F, steps_per_level=True), "steps_per_level must be a number or None"),
     ]
     for function, message in cases:
         with pytest.raises(ValueError, match=message):

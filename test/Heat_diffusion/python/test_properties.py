@@ -84,8 +84,13 @@ def test_decomposition(diffusions, mesh):
     assert np.max(np.abs(hd.synthesize(bands, residual, [1, 1, 1]) - ns)) <= 1e-12 * np.max(np.abs(ns))
     assert np.array_equal(hd.synthesize(bands, residual, [0, 0, 0]), residual)
     V, F, _ = mesh("fandisk.off")
-    bands2, residual2 = hd.decompose(V, F, levels=3)
+    bands2, residual2 = hd.decompose(V, F, levels=3, steps_per_level=5)
     assert np.array_equal(bands2, bands) and np.array_equal(residual2, residual)
+    # decompose_field()'s own steps per level
+    bands3, residual3 = d.decompose(ns, 2)
+    assert bands3.shape == (2, len(ns))
+    assert np.max(np.abs(bands3.sum(axis=0) + residual3 - ns)) <= 1e-12 * np.max(np.abs(ns))
+    assert all(abs(band.sum()) <= 1e-12 * scale for band in bands3)
 
 
 def rotation(seed):
@@ -126,7 +131,11 @@ def test_reconstruction_and_filtering(mesh):
     ns = hd.normal_signature(V, F)
     # with its own NS the mesh is reproduced (up to rounding)
     assert np.max(np.abs(hd.reconstruct(V, F, ns) - V)) <= 1e-8 * diagonal
-    # enhanced details move the vertices, and the NS follows the weights
+    # weights 1 give back the NS: the shape is reproduced
+    same = hd.filter_shape(V, F, [1.0, 1.0, 1.0], steps_per_level=5, anchor_weight=1.0)
+    assert np.max(np.abs(same - V)) <= 1e-8 * diagonal
+    # enhanced details (filter_shape()'s own steps per level and anchor weight) move the
+    # vertices, and the NS follows the weights
     W = hd.filter_shape(V, F, [1.0, 3.0, 3.0])
     assert W.shape == V.shape and np.all(np.isfinite(W))
     assert np.max(np.abs(W - V)) > 1e-4 * diagonal
