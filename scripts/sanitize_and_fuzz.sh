@@ -26,6 +26,7 @@ cmake -S . -B "$build" -G Ninja -DCMAKE_BUILD_TYPE=Debug -DCGAL_DO_NOT_WARN_ABOU
       -DCMAKE_CXX_COMPILER=clang++ \
       -DCGAL_HEAT_DIFFUSION_SANITIZE=ON -DCGAL_HEAT_DIFFUSION_BUILD_FUZZERS=ON \
       -DCGAL_HEAT_DIFFUSION_BUILD_EXAMPLES=OFF -DCGAL_HEAT_DIFFUSION_BUILD_BENCHMARKS=OFF \
+      -DCGAL_HEAT_DIFFUSION_BUILD_PYTHON=OFF \
       -DCGAL_HEAT_DIFFUSION_DATA_DIR="$PWD/build/data/meshes" >/dev/null
 # Not under the sanitizers: the doc and install checks (no package code runs), and
 # the three slowest suites, 10 to 12 times slower under ASan at -O1 than at -O2:

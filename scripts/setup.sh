@@ -8,7 +8,7 @@ cd "$(dirname "$0")/.."
 packages=(g++ cmake make python3 libcgal-dev libcgal-demo libeigen3-dev libboost-dev libspectra-dev
           libsuitesparse-dev libtbb-dev clang libclang-rt-14-dev ninja-build
           doxygen python3-matplotlib python3-numpy  # the reference manual; scripts/render.py
-          pybind11-dev python3-dev python3-scipy python3-meshio python3-pytest  # the Python module and its tests
+          pybind11-dev python3-pybind11 python3-dev python3-scipy python3-meshio python3-pytest  # the Python module
           libjs-mathjax chromium)  # the manual's formulas offline; checked in a browser
 missing=()
 for p in "${packages[@]}"; do

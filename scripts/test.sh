@@ -1,7 +1,8 @@
 #!/usr/bin/env bash
 # The full test suite:
 #  1. installs and builds everything (scripts/setup.sh) and runs the CTest suite in build/
-#     (tests, examples, the Doxygen warnings-as-errors build, the install check);
+#     (tests, examples, the Python module's pytest suite, the Doxygen warnings-as-errors
+#     build, the install check);
 #  2. the robustness stage (scripts/sanitize_and_fuzz.sh): the suite again under
 #     AddressSanitizer + UndefinedBehaviorSanitizer in build/sanitize/, then 60 s of
 #     libFuzzer on hostile OFF input (HEAT_DIFFUSION_FUZZ_SECONDS to change it).

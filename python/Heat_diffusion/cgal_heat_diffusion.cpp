@@ -1,0 +1,974 @@
+// Copyright (c) 2026 The CGAL Heat_diffusion developers.
+// SPDX-License-Identifier: LGPL-3.0-or-later
+//
+// cgal_heat_diffusion: the package from Python, on numpy arrays. A mesh is given as
+// V (n x 3 float64) and F (m x 3 integer); it becomes a Surface_mesh<Epick::Point_3>
+// whose vertex i is row i of V, and every result comes back in that order, whatever
+// order the package works in internally (large meshes are renumbered along a Hilbert
+// curve). The C++ work runs without the GIL; the package's progress callback takes the
+// GIL briefly to check for KeyboardInterrupt and to call the user's `progress`.
+//
+// One translation unit on purpose: CGAL code compiles slowly.
+
+#include <pybind11/numpy.h>
+#include <pybind11/pybind11.h>
+#include <pybind11/stl.h>
+
+#include <CGAL/Exact_predicates_inexact_constructions_kernel.h>
+#include <CGAL/Surface_mesh.h>
+#include <CGAL/subdivision_method_3.h>
+
+#include <CGAL/Heat_diffusion/Anisotropic_heat_diffusion.h>
+#include <CGAL/Heat_diffusion/Edge_weighted_heat_kernel.h>
+#include <CGAL/Heat_diffusion/decomposition.h>
+#include <CGAL/Heat_diffusion/denoising.h>
+#include <CGAL/Heat_diffusion/multiscale_features.h>
+#include <CGAL/Heat_diffusion/normal_controlled_coordinates.h>
+#include <CGAL/Heat_diffusion/reconstruction.h>
+
+#include <Eigen/Sparse>
+
+#include <algorithm>
+#include <cmath>
+#include <cstdint>
+#include <functional>
+#include <limits>
+#include <memory>
+#include <optional>
+#include <sstream>
+#include <stdexcept>
+#include <string>
+#include <utility>
+#include <vector>
+
+namespace py = pybind11;
+namespace HD = CGAL::Heat_diffusion;
+
+namespace {
+
+typedef CGAL::Exact_predicates_inexact_constructions_kernel Kernel;
+typedef Kernel::Point_3 Point;
+typedef CGAL::Surface_mesh<Point> Mesh;
+typedef Mesh::Vertex_index Vertex;
+typedef HD::Anisotropic_heat_diffusion<Mesh> Diffusion;
+typedef HD::Edge_weighted_heat_kernel<Mesh> Heat_kernel;
+
+// Errors of the binding's own checks carry the function's name, as the package's
+// messages carry "CGAL::Heat_diffusion:"; both reach Python as ValueError.
+[[noreturn]] void invalid(const std::string& function, const std::string& what)
+{
+  throw std::invalid_argument("cgal_heat_diffusion." + function + ": " + what);
+}
+
+std::string type_name(py::handle object) { return py::str(py::type::handle_of(object).attr("__name__")); }
+
+// A numpy array that the checks below have accepted, seen without copy.
+py::array checked_array(py::handle object, const std::string& function, const std::string& name)
+{
+  if(!py::isinstance<py::array>(object))
+    invalid(function, name + " must be a numpy array, not " + type_name(object));
+  py::array a = py::reinterpret_borrow<py::array>(object);
+  if(!(a.flags() & py::array::c_style))
+    invalid(function, name + " is not C-contiguous (a slice or a transposed view?); pass np.ascontiguousarray(" +
+                          name + ")");
+  return a;
+}
+
+std::string shape_text(const py::array& a)
+{
+  std::ostringstream os;
+  os << "(";
+  for(py::ssize_t d = 0; d < a.ndim(); ++d)
+    os << (d ? ", " : "") << a.shape(d);
+  os << (a.ndim() == 1 ? ",)" : ")");
+  return os.str();
+}
+
+std::string dtype_text(const py::array& a) { return py::str(a.dtype()); }
+
+bool is_float64(const py::array& a) { return a.dtype().is(py::dtype::of<double>()); }
+
+// V as n x 3 doubles, read only.
+const double* vertex_array(const py::array& V, const std::string& function)
+{
+  if(V.ndim() != 2 || V.shape(1) != 3)
+    invalid(function, "V must have shape (n, 3), not " + shape_text(V));
+  if(!is_float64(V))
+    invalid(function, "V must be float64, not " + dtype_text(V) + "; pass V.astype(np.float64)");
+  return static_cast<const double*>(V.data());
+}
+
+// F as m x 3 vertex indices in [0, n), each face with three different vertices.
+std::vector<std::array<std::size_t, 3> > face_array(const py::array& F, std::size_t n, const std::string& function)
+{
+  if(F.ndim() != 2 || F.shape(1) != 3)
+    invalid(function, "F must have shape (m, 3) (triangles), not " + shape_text(F));
+  const char kind = F.dtype().kind();
+  const py::ssize_t size = F.itemsize();
+  if(!((kind == 'i' || kind == 'u') && (size == 1 || size == 2 || size == 4 || size == 8)) ||
+     !(F.dtype().attr("isnative").cast<bool>()))
+    invalid(function, "F must be an array of integers (int32 or int64), not " + dtype_text(F));
+  const std::size_t m = std::size_t(F.shape(0));
+  auto index = [&](std::size_t k) -> long double {
+    const char* p = static_cast<const char*>(F.data()) + k * std::size_t(size);
+    if(kind == 'i')
+      switch(size)
+      {
+      case 1: return *reinterpret_cast<const std::int8_t*>(p);
+      case 2: return *reinterpret_cast<const std::int16_t*>(p);
+      case 4: return *reinterpret_cast<const std::int32_t*>(p);
+      default: return (long double)(*reinterpret_cast<const std::int64_t*>(p));
+      }
+    switch(size)
+    {
+    case 1: return *reinterpret_cast<const std::uint8_t*>(p);
+    case 2: return *reinterpret_cast<const std::uint16_t*>(p);
+    case 4: return *reinterpret_cast<const std::uint32_t*>(p);
+    default: return (long double)(*reinterpret_cast<const std::uint64_t*>(p));
+    }
+  };
+  std::vector<std::array<std::size_t, 3> > faces(m);
+  for(std::size_t f = 0; f < m; ++f)
+  {
+    for(std::size_t c = 0; c < 3; ++c)
+    {
+      const long double i = index(3 * f + c);
+      if(i < 0 || i >= (long double)n)
+      {
+        std::ostringstream os;
+        os << "F[" << f << "] refers to vertex " << (long long)i << ", out of range [0, " << n << ")";
+        invalid(function, os.str());
+      }
+      faces[f][c] = std::size_t(i);
+    }
+    if(faces[f][0] == faces[f][1] || faces[f][1] == faces[f][2] || faces[f][0] == faces[f][2])
+    {
+      std::ostringstream os;
+      os << "face " << f << " (vertices " << faces[f][0] << ", " << faces[f][1] << ", " << faces[f][2]
+         << ") is degenerate: it repeats a vertex";
+      invalid(function, os.str());
+    }
+  }
+  return faces;
+}
+
+// The Surface_mesh of V and F: vertex i is row i of V (checked), face f is row f of F.
+// Surface_mesh refuses a face that would make an edge non-manifold (three faces, or two
+// faces that run along it in the same direction); the package itself rejects what the
+// halfedge structure can hold but it cannot process (non-manifold vertices, isolated
+// vertices, zero-area faces, non-finite coordinates).
+std::unique_ptr<Mesh> make_mesh(py::handle V_object, py::handle F_object, const std::string& function)
+{
+  const py::array V = checked_array(V_object, function, "V");
+  const py::array F = checked_array(F_object, function, "F");
+  const double* points = vertex_array(V, function);
+  const std::size_t n = std::size_t(V.shape(0));
+  const std::vector<std::array<std::size_t, 3> > faces = face_array(F, n, function);
+  auto mesh = std::make_unique<Mesh>();
+  mesh->reserve(Mesh::size_type(n), Mesh::size_type(3 * faces.size() / 2 + 3), Mesh::size_type(faces.size()));
+  for(std::size_t i = 0; i < n; ++i)
+  {
+    const Vertex v = mesh->add_vertex(Point(points[3 * i], points[3 * i + 1], points[3 * i + 2]));
+    if(std::size_t(v.idx()) != i)
+      throw std::logic_error("cgal_heat_diffusion: Surface_mesh did not number the vertices as V");
+  }
+  for(std::size_t f = 0; f < faces.size(); ++f)
+  {
+    const auto& t = faces[f];
+    if(mesh->add_face(Vertex(Mesh::size_type(t[0])), Vertex(Mesh::size_type(t[1])), Vertex(Mesh::size_type(t[2]))) ==
+       Mesh::null_face())
+    {
+      std::ostringstream os;
+      os << "face " << f << " (vertices " << t[0] << ", " << t[1] << ", " << t[2]
+         << ") makes the mesh non-manifold: one of its edges already has two faces, or a face that runs along "
+            "it in the same direction (inconsistent orientation), or it joins two fans at a vertex; "
+            "CGAL::Polygon_mesh_processing::orient_polygon_soup() repairs such soups";
+      invalid(function, os.str());
+    }
+  }
+  return mesh;
+}
+
+// A field given by input vertex order: a 1-D float64 array of n values (finiteness
+// is checked by the package, whose message names the vertex).
+std::vector<double> field_array(py::handle object, std::size_t n, const std::string& function,
+                                const std::string& name = "field")
+{
+  const py::array a = checked_array(object, function, name);
+  if(a.ndim() != 1 || std::size_t(a.shape(0)) != n)
+  {
+    std::ostringstream os;
+    os << name << " must have shape (" << n << ",) (one value per vertex), not " << shape_text(a);
+    invalid(function, os.str());
+  }
+  if(!is_float64(a))
+    invalid(function, name + " must be float64, not " + dtype_text(a));
+  const double* p = static_cast<const double*>(a.data());
+  return std::vector<double>(p, p + n);
+}
+
+py::array_t<double> make_vector(const std::vector<double>& values)
+{
+  py::array_t<double> result(static_cast<py::ssize_t>(values.size()));
+  std::copy(values.begin(), values.end(), result.mutable_data());
+  return result;
+}
+
+py::array_t<double> mesh_points(const Mesh& mesh)
+{
+  py::array_t<double> result({py::ssize_t(mesh.number_of_vertices()), py::ssize_t(3)});
+  double* out = result.mutable_data();
+  for(Vertex v : mesh.vertices())
+    for(int c = 0; c < 3; ++c)
+      out[3 * std::size_t(v.idx()) + std::size_t(c)] = mesh.point(v)[c];
+  return result;
+}
+
+// The package's progress callback, seen from Python. The package calls it on the
+// calling thread, between parallel blocks, while this module has released the GIL:
+// it takes the GIL, checks for signals (Ctrl-C), then calls the user's callable (a
+// result of None continues, anything false cancels). A Python exception, from the
+// signal check or the user's callable, is kept and cancels the C++ work, which
+// unwinds with a std::runtime_error; `run` then raises the kept exception instead.
+class Python_progress
+{
+public:
+  explicit Python_progress(py::object user) : user_(std::move(user))
+  {
+    if(!user_.is_none() && !PyCallable_Check(user_.ptr()))
+      throw std::invalid_argument("cgal_heat_diffusion: progress must be callable or None, not " + type_name(user_));
+  }
+
+  std::function<bool(double)> callback()
+  {
+    return [this](double fraction) {
+      py::gil_scoped_acquire gil;
+      try
+      {
+        if(PyErr_CheckSignals() != 0)
+          throw py::error_already_set();
+        if(user_.is_none())
+          return true;
+        const py::object answer = user_(fraction);
+        if(answer.is_none())
+          return true;
+        const int truth = PyObject_IsTrue(answer.ptr());
+        if(truth < 0)
+          throw py::error_already_set();
+        return truth == 1;
+      }
+      catch(py::error_already_set& e)
+      {
+        error_ = std::make_shared<py::error_already_set>(std::move(e));
+        return false;
+      }
+    };
+  }
+
+  // Runs `work` without the GIL; raises the Python exception that cancelled it, if any.
+  template <typename Work>
+  auto run(Work&& work) -> decltype(work())
+  {
+    try
+    {
+      py::gil_scoped_release release;
+      return work();
+    }
+    catch(const std::exception&)
+    {
+      if(error_)
+        throw *error_;
+      throw;
+    }
+  }
+
+private:
+  py::object user_;
+  std::shared_ptr<py::error_already_set> error_;
+};
+
+// Runs `work` without the GIL (work that takes no progress callback).
+template <typename Work>
+auto without_gil(Work&& work) -> decltype(work())
+{
+  py::gil_scoped_release release;
+  return work();
+}
+
+// The diffusion options shared by every function that diffuses, named as the C++
+// named parameters and the tool's options: sigma, time, kernel ("local", "spectral" or
+// None: local unless m or coarse is given, the package's Heat_kernel_method::automatic),
+// m (number_of_eigenpairs), coarse (coarse_vertex_count), scale_invariant.
+struct Diffusion_options
+{
+  double sigma = 0.1;
+  double time = 1.;
+  HD::Heat_kernel_method method = HD::Heat_kernel_method::local;
+  std::size_t eigenpairs = 150;
+  double coarse = -1;  // the package's automatic coarse level
+  bool scale_invariant = false;
+};
+
+// An optional whole-number argument (None: not given), with a ValueError that names it.
+long long whole_number(const py::object& value, const std::string& function, const std::string& name)
+{
+  if(py::isinstance<py::bool_>(value) || !PyIndex_Check(value.ptr()))
+    invalid(function, name + " must be a whole number or None, not " + type_name(value));
+  return py::reinterpret_steal<py::object>(PyNumber_Index(value.ptr())).cast<long long>();
+}
+
+std::vector<double> number_list(const py::object& value, const std::string& function, const std::string& name)
+{
+  try
+  {
+    return value.cast<std::vector<double> >();
+  }
+  catch(const py::cast_error&)
+  {
+    invalid(function, name + " must be a sequence of numbers, not " + type_name(value));
+  }
+}
+
+// An optional number (None: the C++ function's own default, which then stays the
+// package's to choose: the binding does not copy it).
+std::optional<double> optional_number(const py::object& value, const std::string& function, const std::string& name)
+{
+  if(value.is_none())
+    return std::nullopt;
+  if(py::isinstance<py::bool_>(value) || !(py::isinstance<py::float_>(value) || PyIndex_Check(value.ptr())))
+    invalid(function, name + " must be a number or None, not " + type_name(value));
+  return value.cast<double>();
+}
+
+Diffusion_options diffusion_options(const std::string& function, double sigma, double time, const py::object& kernel,
+                                    const py::object& m, const py::object& coarse, bool scale_invariant)
+{
+  Diffusion_options o;
+  o.sigma = sigma;
+  o.time = time;
+  o.scale_invariant = scale_invariant;
+  if(!m.is_none())
+  {
+    const long long value = whole_number(m, function, "m");
+    if(value < 1)
+      invalid(function, "m (number_of_eigenpairs) must be at least 1, not " + std::to_string(value));
+    o.eigenpairs = std::size_t(value);
+  }
+  if(!coarse.is_none())
+  {
+    const long long value = whole_number(coarse, function, "coarse");
+    if(value < 0 || (value > 0 && value < 4))
+      invalid(function, "coarse (coarse_vertex_count) must be 0 (none) or at least 4, not " + std::to_string(value));
+    o.coarse = double(value);
+  }
+  const bool eigenpairs_requested = !m.is_none() || !coarse.is_none() || scale_invariant;
+  if(kernel.is_none())
+    o.method = eigenpairs_requested ? HD::Heat_kernel_method::spectral : HD::Heat_kernel_method::local;
+  else
+  {
+    if(!py::isinstance<py::str>(kernel))
+      invalid(function, "kernel must be 'local', 'spectral' or None, not " + type_name(kernel));
+    const std::string name = kernel.cast<std::string>();
+    if(name == "local")
+      o.method = HD::Heat_kernel_method::local;
+    else if(name == "spectral")
+      o.method = HD::Heat_kernel_method::spectral;
+    else
+      invalid(function, "kernel must be 'local', 'spectral' or None, not '" + name + "'");
+  }
+  // The local kernel computes no eigenpairs: their options are refused, not ignored.
+  if(o.method == HD::Heat_kernel_method::local && eigenpairs_requested)
+    invalid(function, "m, coarse and scale_invariant concern the eigenpairs of the spectral kernel; "
+                      "kernel='local' computes none");
+  return o;
+}
+
+// One type of named parameters for every diffusion (one instantiation of each class).
+auto diffusion_parameters(const Diffusion_options& o, std::function<bool(double)> progress)
+{
+  return HD::parameters::combine(
+      HD::parameters::sigma(o.sigma), HD::parameters::time(o.time), HD::parameters::kernel_method(o.method),
+      HD::parameters::number_of_eigenpairs(o.eigenpairs), HD::parameters::scale_invariant_kernel(o.scale_invariant),
+      HD::parameters::coarse_vertex_count(o.coarse), HD::parameters::progress_callback(std::move(progress)));
+}
+
+// A field by the package's vertex index, from input order, and back.
+template <typename Indexed>
+Eigen::VectorXd to_package_order(const Indexed& indexed, const Mesh& mesh, const std::vector<double>& values)
+{
+  Eigen::VectorXd f(static_cast<Eigen::Index>(values.size()));
+  for(Vertex v : mesh.vertices())
+    f[Eigen::Index(indexed.vertex_index(v))] = values[v.idx()];
+  return f;
+}
+
+template <typename Indexed>
+py::array_t<double> to_input_order(const Indexed& indexed, const Mesh& mesh, const Eigen::VectorXd& f)
+{
+  py::array_t<double> result(static_cast<py::ssize_t>(mesh.number_of_vertices()));
+  double* out = result.mutable_data();
+  for(Vertex v : mesh.vertices())
+    out[v.idx()] = f[Eigen::Index(indexed.vertex_index(v))];
+  return result;
+}
+
+std::vector<std::size_t> step_list(const py::object& steps, const std::string& function, bool& single)
+{
+  // Python and numpy integers (anything with __index__), not bools or floats.
+  auto is_integer = [](const py::handle& s) { return !py::isinstance<py::bool_>(s) && PyIndex_Check(s.ptr()); };
+  auto checked = [&](const py::handle& s) {
+    if(!is_integer(s))
+      invalid(function, "steps must be a whole number or a list of them, not " + type_name(s));
+    const long long k = py::reinterpret_steal<py::object>(PyNumber_Index(s.ptr())).cast<long long>();
+    if(k < 0)
+      invalid(function, "steps must not be negative, not " + std::to_string(k));
+    return std::size_t(k);
+  };
+  std::vector<std::size_t> result;
+  single = is_integer(steps);
+  if(single)
+    result.push_back(checked(steps));
+  else
+  {
+    if(!py::isinstance<py::sequence>(steps) && !py::isinstance<py::array>(steps))
+      invalid(function, "steps must be a whole number or a list of them, not " + type_name(steps));
+    for(py::handle s : steps)
+      result.push_back(checked(s));
+  }
+  return result;
+}
+
+// Readable and writable property maps over vectors by input vertex order.
+struct Input_order_field
+{
+  typedef Vertex key_type;
+  typedef double value_type;
+  typedef double reference;
+  typedef boost::read_write_property_map_tag category;
+  double* values;
+  friend double get(const Input_order_field& m, Vertex v) { return m.values[v.idx()]; }
+  friend void put(const Input_order_field& m, Vertex v, double x) { m.values[v.idx()] = x; }
+};
+
+struct Input_order_normals
+{
+  typedef Vertex key_type;
+  typedef Kernel::Vector_3 value_type;
+  typedef Kernel::Vector_3 reference;
+  typedef boost::readable_property_map_tag category;
+  const double* values;
+  friend Kernel::Vector_3 get(const Input_order_normals& m, Vertex v)
+  {
+    const double* p = m.values + 3 * std::size_t(v.idx());
+    return Kernel::Vector_3(p[0], p[1], p[2]);
+  }
+};
+
+py::list features_list(const std::vector<HD::Features_at_scale<Vertex> >& features)
+{
+  py::list result;
+  for(const auto& f : features)
+  {
+    auto indices = [](const std::vector<Vertex>& vs) {
+      py::array_t<std::int64_t> a(static_cast<py::ssize_t>(vs.size()));
+      std::int64_t* out = a.mutable_data();
+      for(std::size_t i = 0; i < vs.size(); ++i)
+        out[i] = std::int64_t(vs[i].idx());
+      std::sort(out, out + vs.size());
+      return a;
+    };
+    py::dict d;
+    d["steps"] = f.number_of_steps;
+    d["convex"] = indices(f.convex);
+    d["concave"] = indices(f.concave);
+    result.append(d);
+  }
+  return result;
+}
+
+// The Python class HeatDiffusion: the mesh and the operator A_t built on it.
+class Heat_diffusion
+{
+public:
+  Heat_diffusion(py::object V, py::object F, double sigma, double time, py::object kernel, py::object m,
+                 py::object coarse, bool scale_invariant, py::object progress)
+    : mesh_(make_mesh(V, F, "HeatDiffusion"))
+  {
+    const Diffusion_options o = diffusion_options("HeatDiffusion", sigma, time, kernel, m, coarse, scale_invariant);
+    Python_progress guard(std::move(progress));
+    const auto np = diffusion_parameters(o, guard.callback());
+    diffusion_ = guard.run([&] { return std::make_unique<Diffusion>(*mesh_, np); });
+  }
+
+  std::size_t number_of_vertices() const { return mesh_->number_of_vertices(); }
+  double time() const { return diffusion_->time(); }
+  std::string kernel() const
+  {
+    return diffusion_->kernel_method() == HD::Heat_kernel_method::local ? "local" : "spectral";
+  }
+
+  py::array_t<double> normal_signature() const
+  {
+    Eigen::VectorXd s(static_cast<Eigen::Index>(number_of_vertices()));
+    const auto& ncc = diffusion_->normal_controlled_coordinates();
+    for(Vertex v : mesh_->vertices())
+      s[Eigen::Index(diffusion_->vertex_index(v))] = ncc.normal_signature(v);
+    return to_input_order(*diffusion_, *mesh_, s);
+  }
+
+  py::object diffuse(py::object field, py::object steps) const
+  {
+    bool single = false;
+    const std::vector<std::size_t> ks = step_list(steps, "HeatDiffusion.diffuse", single);
+    const Eigen::VectorXd f0 =
+        to_package_order(*diffusion_, *mesh_, field_array(field, number_of_vertices(), "HeatDiffusion.diffuse"));
+    const std::vector<Eigen::VectorXd> fields = interruptible_diffusion(f0, ks);
+    if(single)
+      return to_input_order(*diffusion_, *mesh_, fields.front());
+    py::array_t<double> result({py::ssize_t(ks.size()), py::ssize_t(number_of_vertices())});
+    double* out = result.mutable_data();
+    for(std::size_t s = 0; s < ks.size(); ++s)
+      for(Vertex v : mesh_->vertices())
+        out[s * number_of_vertices() + v.idx()] = fields[s][Eigen::Index(diffusion_->vertex_index(v))];
+    return result;
+  }
+
+  // F^k for every k of `steps` (package order), a few steps at a time without the GIL,
+  // checking for signals in between: Ctrl-C stops a long diffusion, which takes no
+  // progress callback. The steps are the same products in the same order as one
+  // diffuse() call: the same bits.
+  std::vector<Eigen::VectorXd> interruptible_diffusion(const Eigen::VectorXd& f0,
+                                                       const std::vector<std::size_t>& steps) const
+  {
+    constexpr std::size_t steps_between_checks = 16;
+    std::vector<std::size_t> stops(steps);
+    std::sort(stops.begin(), stops.end());
+    stops.erase(std::unique(stops.begin(), stops.end()), stops.end());
+    // The package checks the field in its first diffuse() call; with no step to make,
+    // none would come.
+    if(stops.empty() || stops.back() == 0)
+      diffusion_->diffuse(f0, std::size_t(0));
+    std::vector<Eigen::VectorXd> result(steps.size());
+    Eigen::VectorXd current = f0;
+    std::size_t k = 0;
+    for(std::size_t stop : stops)
+    {
+      while(k < stop)
+      {
+        const std::size_t count = (std::min)(steps_between_checks, stop - k);
+        current = without_gil([&] { return diffusion_->diffuse(current, count); });
+        k += count;
+        if(PyErr_CheckSignals() != 0)
+          throw py::error_already_set();
+      }
+      for(std::size_t s = 0; s < steps.size(); ++s)
+        if(steps[s] == stop)
+          result[s] = current;
+    }
+    return result;
+  }
+
+  // A_t in the input's vertex order, as scipy.sparse.csc_matrix (sorted row indices).
+  py::object operator_matrix() const
+  {
+    const std::size_t n = number_of_vertices();
+    std::vector<std::size_t> input_of(n);  // package index -> input index
+    for(Vertex v : mesh_->vertices())
+      input_of[diffusion_->vertex_index(v)] = v.idx();
+    const Eigen::SparseMatrix<double>& A = without_gil([&]() -> const Eigen::SparseMatrix<double>& {
+      return diffusion_->operator_matrix();
+    });
+    const std::size_t nnz = std::size_t(A.nonZeros());
+    py::array_t<double> data(static_cast<py::ssize_t>(nnz));
+    py::array_t<std::int64_t> indices(static_cast<py::ssize_t>(nnz)), indptr(py::ssize_t(n + 1));
+    double* d = data.mutable_data();
+    std::int64_t* r = indices.mutable_data();
+    std::int64_t* p = indptr.mutable_data();
+    {
+      py::gil_scoped_release release;
+      std::vector<std::pair<std::int64_t, double> > column;
+      std::size_t k = 0;
+      p[0] = 0;
+      for(std::size_t j = 0; j < n; ++j)  // input column j is package column index(v_j)
+      {
+        column.clear();
+        for(Eigen::SparseMatrix<double>::InnerIterator it(A, Eigen::Index(diffusion_->vertex_index(Vertex(
+                                                                  Mesh::size_type(j)))));
+            it; ++it)
+          column.emplace_back(std::int64_t(input_of[std::size_t(it.row())]), it.value());
+        std::sort(column.begin(), column.end());
+        for(const auto& e : column)
+        {
+          r[k] = e.first;
+          d[k] = e.second;
+          ++k;
+        }
+        p[j + 1] = std::int64_t(k);
+      }
+    }
+    py::object csc = py::module_::import("scipy.sparse").attr("csc_matrix");
+    return csc(py::make_tuple(data, indices, indptr), py::arg("shape") = py::make_tuple(n, n));
+  }
+
+  py::dict region_statistics() const
+  {
+    const HD::Heat_region_statistics& s = diffusion_->region_statistics();
+    py::dict d;
+    d["min_size"] = s.min_size;
+    d["mean_size"] = s.mean_size;
+    d["max_size"] = s.max_size;
+    d["collapsed_regions"] = s.collapsed_regions;
+    d["capped_regions"] = s.capped_regions;
+    return d;
+  }
+
+  py::list features(py::object field, py::object steps, double feature_threshold) const
+  {
+    bool single = false;
+    const std::vector<std::size_t> ks = step_list(steps, "HeatDiffusion.features", single);
+    std::vector<double> values = field.is_none() ? normal_signature().cast<std::vector<double> >()
+                                                 : field_array(field, number_of_vertices(), "HeatDiffusion.features");
+    const auto features = without_gil([&] {
+      return HD::detect_multiscale_features(*diffusion_, Input_order_field{values.data()}, ks,
+                                            HD::parameters::feature_threshold(feature_threshold));
+    });
+    return features_list(features);
+  }
+
+  py::tuple decompose(py::object field, std::size_t levels, py::object steps_object) const
+  {
+    const std::size_t n = number_of_vertices();
+    std::vector<double> values = field.is_none() ? normal_signature().cast<std::vector<double> >()
+                                                 : field_array(field, n, "HeatDiffusion.decompose");
+    const std::optional<double> steps_per_level =
+        optional_number(steps_object, "HeatDiffusion.decompose", "steps_per_level");
+    py::array_t<double> bands({py::ssize_t(levels), py::ssize_t(n)});
+    py::array_t<double> residual(static_cast<py::ssize_t>(n));
+    double* band_data = bands.mutable_data();
+    double* residual_data = residual.mutable_data();
+    without_gil([&] {
+      std::vector<Input_order_field> maps;
+      for(std::size_t j = 0; j < levels; ++j)
+        maps.push_back(Input_order_field{band_data + j * n});
+      // Only if given: decompose_field() keeps its own default.
+      if(steps_per_level)
+        HD::decompose_field(*diffusion_, Input_order_field{values.data()}, maps, Input_order_field{residual_data},
+                            HD::parameters::steps_per_level(*steps_per_level));
+      else
+        HD::decompose_field(*diffusion_, Input_order_field{values.data()}, maps, Input_order_field{residual_data});
+    });
+    return py::make_tuple(bands, residual);
+  }
+
+private:
+  std::unique_ptr<Mesh> mesh_;            // must outlive diffusion_, which refers to it
+  std::unique_ptr<Diffusion> diffusion_;
+};
+
+py::array_t<double> normal_signature(py::object V, py::object F)
+{
+  const auto mesh = make_mesh(V, F, "normal_signature");
+  std::vector<double> ns(mesh->number_of_vertices());
+  without_gil([&] {
+    HD::compute_normal_signature(*mesh, Input_order_field{ns.data()});
+  });
+  return make_vector(ns);
+}
+
+py::array_t<double> normal_controlled_coordinates(py::object V, py::object F)
+{
+  const auto mesh = make_mesh(V, F, "normal_controlled_coordinates");
+  const std::size_t n = mesh->number_of_vertices();
+  py::array_t<double> result({py::ssize_t(n), py::ssize_t(3)});
+  double* out = result.mutable_data();
+  without_gil([&] {
+    const HD::Normal_controlled_coordinates<Mesh> ncc(*mesh);
+    for(Vertex v : mesh->vertices())
+    {
+      const Kernel::Vector_3 d = ncc.ncc(v);
+      for(int c = 0; c < 3; ++c)
+        out[3 * std::size_t(v.idx()) + std::size_t(c)] = d[c];
+    }
+  });
+  return result;
+}
+
+py::list multiscale_features(py::object V, py::object F, py::object field, py::object steps, double feature_threshold,
+                             double sigma, double time, py::object kernel, py::object m, py::object coarse,
+                             bool scale_invariant, py::object progress)
+{
+  const Heat_diffusion diffusion(V, F, sigma, time, kernel, m, coarse, scale_invariant, progress);
+  return diffusion.features(field, steps, feature_threshold);
+}
+
+py::tuple decompose(py::object V, py::object F, py::object field, std::size_t levels, py::object steps_per_level,
+                    double sigma, double time, py::object kernel, py::object m, py::object coarse,
+                    bool scale_invariant, py::object progress)
+{
+  const Heat_diffusion diffusion(V, F, sigma, time, kernel, m, coarse, scale_invariant, progress);
+  return diffusion.decompose(field, levels, steps_per_level);
+}
+
+// Eq. 26 on arrays: residual + sum_j weights[j] bands[j].
+py::array_t<double> synthesize(py::object bands_object, py::object residual_object, py::object weights_object)
+{
+  const std::string function = "synthesize";
+  const py::array residual_array = checked_array(residual_object, function, "residual");
+  if(residual_array.ndim() != 1)
+    invalid(function, "residual must have shape (n,), not " + shape_text(residual_array));
+  const std::size_t n = std::size_t(residual_array.shape(0));
+  const std::vector<double> residual = field_array(residual_object, n, function, "residual");
+  const py::array bands_array = checked_array(bands_object, function, "bands");
+  if(bands_array.ndim() != 2 || std::size_t(bands_array.shape(1)) != n)
+    invalid(function, "bands must have shape (L, " + std::to_string(n) + ") (one row per band), not " +
+                          shape_text(bands_array));
+  if(!is_float64(bands_array))
+    invalid(function, "bands must be float64, not " + dtype_text(bands_array));
+  const std::vector<double> weights =
+      HD::internal::checked_weights(number_list(weights_object, function, "weights"), "synthesize");
+  const std::size_t levels = std::size_t(bands_array.shape(0));
+  if(weights.size() != levels)
+  {
+    std::ostringstream os;
+    os << weights.size() << " weights for " << levels << " detail bands";
+    invalid(function, os.str());
+  }
+  std::vector<Eigen::VectorXd> bands(levels + 1);
+  const double* b = static_cast<const double*>(bands_array.data());
+  for(std::size_t j = 0; j < levels; ++j)
+    bands[j] = Eigen::Map<const Eigen::VectorXd>(b + j * n, Eigen::Index(n));
+  bands[levels] = Eigen::Map<const Eigen::VectorXd>(residual.data(), Eigen::Index(n));
+  for(const Eigen::VectorXd& band : bands)
+    for(Eigen::Index i = 0; i < band.size(); ++i)
+      if(!std::isfinite(band[i]))
+        invalid(function, "the bands and the residual must be finite (value " + std::to_string(i) + " is not)");
+  const Eigen::VectorXd result = HD::internal::synthesize(bands, weights);
+  return make_vector(std::vector<double>(result.data(), result.data() + result.size()));
+}
+
+py::array_t<double> filter_shape(py::object V, py::object F, py::object weights_object, py::object steps_object,
+                                 py::object anchor_object, double sigma, double time, py::object kernel, py::object m,
+                                 py::object coarse, bool scale_invariant, py::object progress)
+{
+  const std::string function = "filter_shape";
+  auto mesh = make_mesh(V, F, function);
+  const Diffusion_options o = diffusion_options(function, sigma, time, kernel, m, coarse, scale_invariant);
+  const std::vector<double> weights = number_list(weights_object, function, "weights");
+  const std::optional<double> steps_per_level = optional_number(steps_object, function, "steps_per_level");
+  const std::optional<double> anchor_weight = optional_number(anchor_object, function, "anchor_weight");
+  Python_progress guard(std::move(progress));
+  const auto np = diffusion_parameters(o, guard.callback());
+  auto run = [&](const auto& parameters) { guard.run([&] { HD::filter_shape(*mesh, weights, parameters); }); };
+  // Only the parameters given are passed: filter_shape() keeps its own defaults.
+  if(steps_per_level && anchor_weight)
+    run(HD::parameters::combine(np, HD::parameters::steps_per_level(*steps_per_level),
+                                HD::parameters::anchor_weight(*anchor_weight)));
+  else if(steps_per_level)
+    run(HD::parameters::combine(np, HD::parameters::steps_per_level(*steps_per_level)));
+  else if(anchor_weight)
+    run(HD::parameters::combine(np, HD::parameters::anchor_weight(*anchor_weight)));
+  else
+    run(np);
+  return mesh_points(*mesh);
+}
+
+py::array_t<double> heat_kernel_signature(py::object V, py::object F, double time, double sigma, py::object m,
+                                          py::object coarse, bool scale_invariant, py::object progress)
+{
+  const auto mesh = make_mesh(V, F, "heat_kernel_signature");
+  Diffusion_options o = diffusion_options("heat_kernel_signature", sigma, 1., py::str("spectral"), m, coarse,
+                                          scale_invariant);
+  if(!(time > 0) || !std::isfinite(time))
+    invalid("heat_kernel_signature", "time must be positive and finite");
+  Python_progress guard(std::move(progress));
+  const auto np = diffusion_parameters(o, guard.callback());
+  std::vector<double> hks(mesh->number_of_vertices());
+  guard.run([&] {
+    const Heat_kernel kernel(*mesh, np);
+    for(Vertex v : mesh->vertices())
+      hks[v.idx()] = kernel.heat_kernel_signature(v, time);
+  });
+  return make_vector(hks);
+}
+
+py::array_t<double> denoise(py::object V, py::object F, const std::string& method, py::object iterations_object,
+                            py::object steps_object, double sigma, double time, py::object kernel, py::object m,
+                            py::object coarse, double anchor_weight, py::object normal_sigma,
+                            double displacement_limit, py::object progress)
+{
+  const std::string function = "denoise";
+  auto mesh = make_mesh(V, F, function);
+  HD::Denoising_method denoising = HD::Denoising_method::normal_filtering;
+  if(method == "signature_diffusion")
+    denoising = HD::Denoising_method::signature_diffusion;
+  else if(method != "normal_filtering")
+    invalid(function, "method must be 'normal_filtering' or 'signature_diffusion', not '" + method + "'");
+  const bool filtering = denoising == HD::Denoising_method::normal_filtering;
+  // The defaults of denoise_mesh(), which depend on the method.
+  const long long iterations = iterations_object.is_none() ? (filtering ? 100 : 2)
+                                                          : whole_number(iterations_object, function, "number_of_iterations");
+  const long long steps =
+      steps_object.is_none() ? (filtering ? 2 : 1) : whole_number(steps_object, function, "number_of_steps");
+  if(iterations < 0)
+    invalid(function, "number_of_iterations must not be negative");
+  if(steps < 0)
+    invalid(function, "number_of_steps must not be negative");
+  const Diffusion_options o = diffusion_options(function, sigma, time, kernel, m, coarse, false);
+  Python_progress guard(std::move(progress));
+  const auto np = HD::parameters::combine(
+      HD::parameters::denoising_method(denoising), CGAL::parameters::number_of_iterations(unsigned(iterations)),
+      HD::parameters::number_of_steps(std::size_t(steps)), HD::parameters::displacement_limit(displacement_limit),
+      HD::parameters::sigma(o.sigma), HD::parameters::time(o.time), HD::parameters::kernel_method(o.method),
+      HD::parameters::number_of_eigenpairs(o.eigenpairs), HD::parameters::coarse_vertex_count(o.coarse),
+      HD::parameters::anchor_weight(anchor_weight), HD::parameters::progress_callback(guard.callback()));
+  if(normal_sigma.is_none())  // the default depends on the noise: left to denoise_mesh()
+    guard.run([&] { HD::denoise_mesh(*mesh, np); });
+  else
+  {
+    if(!py::isinstance<py::float_>(normal_sigma) && !py::isinstance<py::int_>(normal_sigma))
+      invalid(function, "normal_sigma must be a number or None, not " + type_name(normal_sigma));
+    const double value = normal_sigma.cast<double>();
+    guard.run([&] { HD::denoise_mesh(*mesh, HD::parameters::combine(np, HD::parameters::normal_sigma(value))); });
+  }
+  return mesh_points(*mesh);
+}
+
+py::array_t<double> reconstruct(py::object V, py::object F, py::object ns_object, double anchor_weight,
+                                py::object normals_object)
+{
+  const std::string function = "reconstruct";
+  auto mesh = make_mesh(V, F, function);
+  const std::size_t n = mesh->number_of_vertices();
+  std::vector<double> ns = field_array(ns_object, n, function, "ns");
+  if(normals_object.is_none())
+    without_gil([&] {
+      HD::reconstruct_from_normal_signature(*mesh, Input_order_field{ns.data()},
+                                            HD::parameters::anchor_weight(anchor_weight));
+    });
+  else
+  {
+    const py::array normals = checked_array(normals_object, function, "normals");
+    if(normals.ndim() != 2 || std::size_t(normals.shape(0)) != n || normals.shape(1) != 3 || !is_float64(normals))
+      invalid(function, "normals must be a float64 array of shape (" + std::to_string(n) + ", 3), not " +
+                            dtype_text(normals) + " " + shape_text(normals));
+    std::vector<double> copy(static_cast<const double*>(normals.data()),
+                             static_cast<const double*>(normals.data()) + 3 * n);
+    without_gil([&] {
+      HD::reconstruct_from_normal_signature(
+          *mesh, Input_order_field{ns.data()},
+          HD::parameters::combine(HD::parameters::anchor_weight(anchor_weight),
+                                  CGAL::parameters::vertex_normal_map(Input_order_normals{copy.data()})));
+    });
+  }
+  return mesh_points(*mesh);
+}
+
+// Loop subdivision (CGAL::Subdivision_method_3): the benchmark makes its large meshes
+// with it, as the C++ benchmarks do.
+py::tuple loop_subdivision(py::object V, py::object F, int iterations)
+{
+  if(iterations < 0)
+    invalid("loop_subdivision", "iterations must not be negative");
+  auto mesh = make_mesh(V, F, "loop_subdivision");
+  without_gil([&] {
+    CGAL::Subdivision_method_3::Loop_subdivision(*mesh, CGAL::parameters::number_of_iterations(iterations));
+  });
+  py::array_t<std::int64_t> faces({py::ssize_t(mesh->number_of_faces()), py::ssize_t(3)});
+  std::int64_t* out = faces.mutable_data();
+  std::size_t k = 0;
+  for(auto f : mesh->faces())
+    for(Vertex v : vertices_around_face(mesh->halfedge(f), *mesh))
+      out[k++] = std::int64_t(v.idx());
+  return py::make_tuple(mesh_points(*mesh), faces);
+}
+
+const char* const diffusion_arguments_doc =
+    "sigma: edge-weight width of eq. 10 (small keeps features); time: t of one step, on the mesh rescaled\n"
+    "to area = vertex count; kernel: 'local', 'spectral' or None (local unless m or coarse is given);\n"
+    "m: number_of_eigenpairs of the spectral kernel (default 150); coarse: coarse_vertex_count of its\n"
+    "eigen solve (None: automatic, 0: none); scale_invariant: the kernel of eq. 14 (spectral);\n"
+    "progress: None or a callable f(fraction) called during the construction; returning False cancels\n"
+    "it with RuntimeError (None continues). Ctrl-C cancels it too (KeyboardInterrupt).\n";
+
+} // namespace
+
+PYBIND11_MODULE(cgal_heat_diffusion, module)
+{
+  module.doc() =
+      "CGAL Heat_diffusion (multi-scale anisotropic heat diffusion) on numpy arrays.\n\n"
+      "A mesh is V (n x 3, float64, C-contiguous) and F (m x 3 integer triangles). Results are in the\n"
+      "order of the rows of V. Invalid input (shapes, dtypes, non-contiguous arrays, NaN, indices out of\n"
+      "range, non-manifold or degenerate meshes, parameters) raises ValueError with the package's message.";
+
+  py::class_<Heat_diffusion>(module, "HeatDiffusion",
+                             (std::string("The operator A_t of the mesh (V, F), built once, applied many times.\n") +
+                              diffusion_arguments_doc)
+                                 .c_str())
+      .def(py::init<py::object, py::object, double, double, py::object, py::object, py::object, bool, py::object>(),
+           py::arg("V"), py::arg("F"), py::kw_only(), py::arg("sigma") = 0.1, py::arg("time") = 1.0,
+           py::arg("kernel") = py::none(), py::arg("m") = py::none(), py::arg("coarse") = py::none(),
+           py::arg("scale_invariant") = false, py::arg("progress") = py::none())
+      .def("diffuse", &Heat_diffusion::diffuse, py::arg("field"), py::arg("steps") = 1,
+           "F^k = A_t^k F^0. steps: one k (returns an (n,) array) or a list of them (returns a (len, n) array).")
+      .def("operator_matrix", &Heat_diffusion::operator_matrix,
+           "A_t as a scipy.sparse.csc_matrix in the input's vertex order; every column sums to 1.")
+      .def("region_statistics", &Heat_diffusion::region_statistics,
+           "Sizes of the heat regions: min_size, mean_size, max_size, collapsed_regions, capped_regions.")
+      .def("normal_signature", &Heat_diffusion::normal_signature, "The Normal Signature of the mesh, (n,).")
+      .def("features", &Heat_diffusion::features, py::arg("field") = py::none(), py::arg("steps") = std::vector<int>{0, 10, 40},
+           py::kw_only(), py::arg("feature_threshold") = 0.8,
+           "Convex and concave features of the diffused field (default: the NS) at each k of steps: a list\n"
+           "of dicts {'steps', 'convex', 'concave'} with sorted vertex indices.")
+      .def("decompose", &Heat_diffusion::decompose, py::arg("field") = py::none(), py::arg("levels") = 3,
+           py::kw_only(), py::arg("steps_per_level") = py::none(),
+           "Detail bands (levels, n) and residual (n,) of the field (default: the NS), eq. 24;\n"
+           "steps_per_level None: decompose_field()'s default.")
+      .def_property_readonly("number_of_vertices", &Heat_diffusion::number_of_vertices)
+      .def_property_readonly("time", &Heat_diffusion::time)
+      .def_property_readonly("kernel", &Heat_diffusion::kernel, "'local' or 'spectral'");
+
+  module.def("normal_signature", &normal_signature, py::arg("V"), py::arg("F"),
+             "The Normal Signature (n,): > 0 convex, < 0 concave, 0 flat.");
+  module.def("normal_controlled_coordinates", &normal_controlled_coordinates, py::arg("V"), py::arg("F"),
+             "The Normal-Controlled Coordinates (n, 3), parallel to the vertex normals.");
+  module.def("multiscale_features", &multiscale_features, py::arg("V"), py::arg("F"), py::arg("field") = py::none(),
+             py::arg("steps") = std::vector<int>{0, 10, 40}, py::kw_only(), py::arg("feature_threshold") = 0.8,
+             py::arg("sigma") = 0.1, py::arg("time") = 1.0, py::arg("kernel") = py::none(), py::arg("m") = py::none(),
+             py::arg("coarse") = py::none(), py::arg("scale_invariant") = false, py::arg("progress") = py::none(),
+             (std::string("Features of the diffused field (default: the NS), as HeatDiffusion.features.\n") +
+              diffusion_arguments_doc)
+                 .c_str());
+  module.def("decompose", &decompose, py::arg("V"), py::arg("F"), py::arg("field") = py::none(),
+             py::arg("levels") = 3, py::kw_only(), py::arg("steps_per_level") = py::none(), py::arg("sigma") = 0.1,
+             py::arg("time") = 1.0, py::arg("kernel") = py::none(), py::arg("m") = py::none(),
+             py::arg("coarse") = py::none(), py::arg("scale_invariant") = false, py::arg("progress") = py::none(),
+             (std::string("Detail bands (levels, n) and residual (n,) of the field (default: the NS).\n") +
+              diffusion_arguments_doc)
+                 .c_str());
+  module.def("synthesize", &synthesize, py::arg("bands"), py::arg("residual"), py::arg("weights"),
+             "residual + sum_j weights[j] bands[j] (eq. 26).");
+  module.def("filter_shape", &filter_shape, py::arg("V"), py::arg("F"), py::arg("weights"), py::kw_only(),
+             py::arg("steps_per_level") = py::none(), py::arg("anchor_weight") = py::none(), py::arg("sigma") = 0.1,
+             py::arg("time") = 1.0, py::arg("kernel") = py::none(), py::arg("m") = py::none(),
+             py::arg("coarse") = py::none(), py::arg("scale_invariant") = false, py::arg("progress") = py::none(),
+             (std::string("New vertex positions (n, 3): the NS bands reweighted, the shape reconstructed;\n"
+                         "steps_per_level, anchor_weight None: filter_shape()'s defaults.\n") +
+              diffusion_arguments_doc)
+                 .c_str());
+  module.def("heat_kernel_signature", &heat_kernel_signature, py::arg("V"), py::arg("F"), py::kw_only(),
+             py::arg("time") = 20.0, py::arg("sigma") = std::numeric_limits<double>::infinity(),
+             py::arg("m") = py::none(), py::arg("coarse") = py::none(), py::arg("scale_invariant") = false,
+             py::arg("progress") = py::none(),
+             "The heat kernel signature h_t(i, i) (n,) of the spectral kernel (sigma = inf: the classical HKS).");
+  module.def("denoise", &denoise, py::arg("V"), py::arg("F"), py::kw_only(), py::arg("method") = "normal_filtering",
+             py::arg("number_of_iterations") = py::none(), py::arg("number_of_steps") = py::none(),
+             py::arg("sigma") = 1.0, py::arg("time") = 1.0, py::arg("kernel") = py::none(), py::arg("m") = py::none(),
+             py::arg("coarse") = py::none(), py::arg("anchor_weight") = 0.7, py::arg("normal_sigma") = py::none(),
+             py::arg("displacement_limit") = 1.1, py::arg("progress") = py::none(),
+             "New vertex positions (n, 3) of the denoised mesh (denoise_mesh(); the defaults are its own).");
+  module.def("reconstruct", &reconstruct, py::arg("V"), py::arg("F"), py::arg("ns"), py::kw_only(),
+             py::arg("anchor_weight") = 1.0, py::arg("normals") = py::none(),
+             "New vertex positions (n, 3) whose NCC match the Normal Signature ns (eq. 23).");
+  module.def("loop_subdivision", &loop_subdivision, py::arg("V"), py::arg("F"), py::arg("iterations") = 1,
+             "(V, F) of the mesh Loop-subdivided `iterations` times.");
+}

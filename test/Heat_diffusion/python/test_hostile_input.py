@@ -1,0 +1,263 @@
+# Bad input through the binding: every case raises ValueError with a message (the
+# package's own, or the binding's for what never reaches the package), never a crash.
+# The hostile corpus of test/Heat_diffusion/data goes through it too.
+import os
+import subprocess
+import sys
+import tempfile
+
+import numpy as np
+import pytest
+
+import cgal_heat_diffusion as hd
+
+# A square of two triangles and a tetrahedron: small valid meshes to break.
+SQUARE_V = np.array([[0, 0, 0], [1, 0, 0], [1, 1, 0], [0, 1, 0]], dtype=np.float64)
+SQUARE_F = np.array([[0, 1, 2], [0, 2, 3]], dtype=np.int64)
+TETRA_V = np.array([[0, 0, 0], [1, 0, 0], [0, 1, 0], [0, 0, 1]], dtype=np.float64)
+TETRA_F = np.array([[0, 2, 1], [0, 1, 3], [0, 3, 2], [1, 2, 3]], dtype=np.int32)
+
+ALL_FUNCTIONS = {
+    "normal_signature": lambda V, F: hd.normal_signature(V, F),
+    "normal_controlled_coordinates": lambda V, F: hd.normal_controlled_coordinates(V, F),
+    "HeatDiffusion": lambda V, F: hd.HeatDiffusion(V, F),
+    "HeatDiffusion spectral": lambda V, F: hd.HeatDiffusion(V, F, kernel="spectral", m=3),
+    "multiscale_features": lambda V, F: hd.multiscale_features(V, F),
+    "decompose": lambda V, F: hd.decompose(V, F),
+    "filter_shape": lambda V, F: hd.filter_shape(V, F, [1.0, 2.0]),
+    "heat_kernel_signature": lambda V, F: hd.heat_kernel_signature(V, F, m=3),
+    "denoise": lambda V, F: hd.denoise(V, F),
+    "reconstruct": lambda V, F: hd.reconstruct(V, F, np.zeros(len(V))),
+}
+
+BAD_MESHES = {
+    "V not an array": ([[0.0, 0, 0]] * 4, SQUARE_F, "V must be a numpy array"),
+    "V of int": (SQUARE_V.astype(np.int64), SQUARE_F, "V must be float64"),
+    "V of float32": (SQUARE_V.astype(np.float32), SQUARE_F, "V must be float64"),
+    "V of shape (n, 2)": (np.ascontiguousarray(SQUARE_V[:, :2]), SQUARE_F, r"V must have shape \(n, 3\)"),
+    "V flat": (SQUARE_V.ravel(), SQUARE_F, r"V must have shape \(n, 3\)"),
+    "V not contiguous": (np.asfortranarray(SQUARE_V), SQUARE_F, "V is not C-contiguous"),
+    "V a strided view": (np.zeros((4, 6))[:, ::2], SQUARE_F, "V is not C-contiguous"),
+    "F of float": (SQUARE_V, SQUARE_F.astype(np.float64), "F must be an array of integers"),
+    "F of quads": (SQUARE_V, np.array([[0, 1, 2, 3]]), r"F must have shape \(m, 3\)"),
+    "F not contiguous": (SQUARE_V, np.asfortranarray(np.array([[0, 1, 2], [0, 2, 3], [1, 2, 3]])),
+                         "F is not C-contiguous"),
+    "F out of range": (SQUARE_V, np.array([[0, 1, 2], [0, 2, 4]]), r"F\[1\] refers to vertex 4, out of range"),
+    "F negative": (SQUARE_V, np.array([[0, 1, 2], [0, -1, 3]]), "refers to vertex -1, out of range"),
+    "F huge": (SQUARE_V, np.array([[0, 1, 2], [0, 2, 2**62]], dtype=np.int64), "out of range"),
+    "F huge unsigned": (SQUARE_V, np.array([[0, 1, 2], [0, 2, 2**64 - 1]], dtype=np.uint64), "out of range"),
+    "F repeated vertex": (SQUARE_V, np.array([[0, 1, 1], [0, 2, 3]]), "face 0 .* repeats a vertex"),
+    "NaN coordinate": (np.array([[0, 0, 0], [1, 0, 0], [1, 1, np.nan], [0, 1, 0]]), SQUARE_F,
+                       "vertex 2 has a non-finite coordinate"),
+    "inf coordinate": (np.array([[0, 0, 0], [1, 0, np.inf], [1, 1, 0], [0, 1, 0]]), SQUARE_F,
+                       "vertex 1 has a non-finite coordinate"),
+    "isolated vertex": (np.vstack([SQUARE_V, [[5.0, 5, 5]]]), SQUARE_F, "vertex 4 is isolated"),
+    "zero-area face": (np.array([[0, 0, 0], [1, 0, 0], [2, 0, 0], [0, 1, 0]], dtype=np.float64),
+                       np.array([[0, 1, 2], [0, 2, 3]]), "face 0 .* has zero area"),
+    "non-manifold edge": (np.array([[0, 0, 0], [1, 0, 0], [0, 1, 0], [0, -1, 0], [0, 0, 1]], dtype=np.float64),
+                          np.array([[0, 1, 2], [1, 0, 3], [0, 1, 4]]), "face 2 .* non-manifold"),
+    "inconsistent orientation": (SQUARE_V, np.array([[0, 1, 2], [0, 3, 2]]), "face 1 .* non-manifold"),
+    "duplicated face": (SQUARE_V, np.array([[0, 1, 2], [0, 2, 3], [0, 1, 2]]), "face 2 .* non-manifold"),
+    "non-manifold vertex": (np.array([[0, 0, 0], [1, 0, 0], [0, 1, 0], [-1, 0, 0], [0, -1, 0]], dtype=np.float64),
+                            np.array([[0, 1, 2], [0, 3, 4]]), "(vertex 0 is non-manifold|face 1 .* non-manifold)"),
+    "no faces": (SQUARE_V, np.zeros((0, 3), dtype=np.int64), "vertex 0 is isolated"),
+}
+
+
+@pytest.mark.parametrize("function", sorted(ALL_FUNCTIONS))
+@pytest.mark.parametrize("case", sorted(BAD_MESHES))
+def test_bad_mesh_raises_value_error(case, function):
+    V, F, message = BAD_MESHES[case]
+    with pytest.raises(ValueError, match=message):
+        ALL_FUNCTIONS[function](V, F)
+
+
+def test_valid_small_meshes_work():
+    for V, F in ((SQUARE_V, SQUARE_F), (TETRA_V, TETRA_F), (SQUARE_V, SQUARE_F.astype(np.uint32))):
+        for name, function in ALL_FUNCTIONS.items():
+            if name in ("HeatDiffusion spectral", "heat_kernel_signature") and len(V) <= 3:
+                continue
+            result = function(V, F)
+            assert result is not None, name
+
+
+def test_empty_mesh():
+    V, F = np.zeros((0, 3)), np.zeros((0, 3), dtype=np.int64)
+    assert hd.normal_signature(V, F).shape == (0,)
+    with pytest.raises(ValueError, match="the mesh is empty"):
+        hd.HeatDiffusion(V, F)
+
+
+BAD_PARAMETERS = {
+    "sigma 0": (lambda V, F: hd.HeatDiffusion(V, F, sigma=0.0), "sigma must be positive"),
+    "sigma NaN": (lambda V, F: hd.HeatDiffusion(V, F, sigma=float("nan")), "sigma must be positive"),
+    "time 0": (lambda V, F: hd.HeatDiffusion(V, F, time=0.0), "time must be positive and finite"),
+    "time inf": (lambda V, F: hd.HeatDiffusion(V, F, time=float("inf")), "time must be positive and finite"),
+    "kernel": (lambda V, F: hd.HeatDiffusion(V, F, kernel="magic"), "kernel must be 'local', 'spectral' or None"),
+    "m 0": (lambda V, F: hd.HeatDiffusion(V, F, m=0), "m .* must be at least 1"),
+    "coarse 2": (lambda V, F: hd.HeatDiffusion(V, F, coarse=2), "coarse .* must be 0 .* or at least 4"),
+    "local with m": (lambda V, F: hd.HeatDiffusion(V, F, kernel="local", m=10), "kernel='local' computes none"),
+    "feature threshold": (lambda V, F: hd.multiscale_features(V, F, feature_threshold=2.0), "threshold"),
+    "steps per level": (lambda V, F: hd.decompose(V, F, steps_per_level=0), "steps_per_level"),
+    "steps per level 2.5": (lambda V, F: hd.filter_shape(V, F, [1.0], steps_per_level=2.5), "steps_per_level"),
+    "weights NaN": (lambda V, F: hd.filter_shape(V, F, [1.0, float("nan")]), "weight 1 is nan"),
+    "anchor weight": (lambda V, F: hd.reconstruct(V, F, np.zeros(len(V)), anchor_weight=-1.0), "anchor_weight"),
+    "ns length": (lambda V, F: hd.reconstruct(V, F, np.zeros(3)), r"ns must have shape \(4,\)"),
+    "ns NaN": (lambda V, F: hd.reconstruct(V, F, np.full(len(V), np.nan)), "not"),
+    "denoise method": (lambda V, F: hd.denoise(V, F, method="magic"), "method must be"),
+    "denoise iterations": (lambda V, F: hd.denoise(V, F, number_of_iterations=-1), "number_of_iterations"),
+    "hks time": (lambda V, F: hd.heat_kernel_signature(V, F, time=-1.0, m=3), "time must be positive"),
+    "subdivision": (lambda V, F: hd.loop_subdivision(V, F, -1), "iterations must not be negative"),
+}
+
+
+@pytest.mark.parametrize("case", sorted(BAD_PARAMETERS))
+def test_bad_parameters_raise_value_error(case):
+    function, message = BAD_PARAMETERS[case]
+    with pytest.raises(ValueError, match=message):
+        function(TETRA_V, TETRA_F.astype(np.int64))
+
+
+def test_bad_fields_and_steps():
+    d = hd.HeatDiffusion(TETRA_V, TETRA_F)
+    good = np.arange(4, dtype=np.float64)
+    cases = [
+        (lambda: d.diffuse(np.zeros(5)), r"field must have shape \(4,\)"),
+        (lambda: d.diffuse(np.zeros((4, 1))), r"field must have shape \(4,\)"),
+        (lambda: d.diffuse(np.arange(4)), "field must be float64"),
+        (lambda: d.diffuse([0.0, 1.0, 2.0, 3.0]), "field must be a numpy array"),
+        (lambda: d.diffuse(np.zeros(8)[::2]), "field is not C-contiguous"),
+        (lambda: d.diffuse(np.array([0, np.nan, 0, 0])), "field value at vertex 1 is not finite"),
+        (lambda: d.diffuse(good, -1), "steps must not be negative"),
+        (lambda: d.diffuse(good, [1, -2]), "steps must not be negative"),
+        (lambda: d.diffuse(good, 1.5), "steps must be a whole number"),
+        (lambda: d.diffuse(good, True), "steps must be a whole number"),
+        (lambda: d.diffuse(good, "3"), "steps must be a whole number"),
+        (lambda: d.features(np.array([0, np.inf, 0, 0])), "field value at vertex 1 is inf, not a finite number"),
+        (lambda: d.decompose(np.array([0, np.inf, 0, 0]), 2), "not a finite number"),
+        (lambda: hd.synthesize(np.zeros((2, 4)), np.zeros(4), [1.0]), "1 weights for 2 detail bands"),
+        (lambda: hd.synthesize(np.zeros((2, 3)), np.zeros(4), [1.0, 1.0]), r"bands must have shape \(L, 4\)"),
+        (lambda: hd.synthesize(np.full((2, 4), np.nan), np.zeros(4), [1.0, 1.0]), "must be finite"),
+    ]
+    for function, message in cases:
+        with pytest.raises(ValueError, match=message):
+            function()
+
+
+HOSTILE_DIR = os.environ.get("HEAT_DIFFUSION_HOSTILE_DATA_DIR", "")
+HOSTILE_FILES = sorted(os.listdir(HOSTILE_DIR)) if os.path.isdir(HOSTILE_DIR) else []
+
+
+def test_hostile_corpus_is_there():
+    assert HOSTILE_DIR, "HEAT_DIFFUSION_HOSTILE_DATA_DIR is not set: run the tests through CTest"
+    assert len(HOSTILE_FILES) >= 30, HOSTILE_FILES
+
+
+class Unreadable(Exception):
+    pass
+
+
+def read_off(path):
+    """V and F of an OFF file, as arrays, for what the arrays can hold. meshio is not
+    used for OFF: on hostile OFF files it loops forever (a header alone) or calls
+    sys.exit(). Integer-valued indices give an int64 F, others a float64 F (which the
+    binding must reject), faces all of one size k an (m, k) F."""
+    with open(path, "rb") as f:
+        data = f.read()
+    lines = []
+    for raw in data.decode("ascii", errors="strict").splitlines():
+        line = raw.split("#", 1)[0].split()
+        if line:
+            lines.append(line)
+    if not lines or not lines[0][0].endswith("OFF"):
+        raise Unreadable("no OFF header")
+    header = lines[0][1:] if len(lines[0]) > 1 else (lines[1] if len(lines) > 1 else [])
+    body = lines[1:] if len(lines[0]) > 1 else lines[2:]
+    if len(header) < 2:
+        raise Unreadable("no vertex and face counts")
+    try:
+        n, m = int(header[0]), int(header[1])
+    except ValueError:
+        raise Unreadable(f"counts {header[:2]} are not integers")
+    if n < 0 or m < 0 or n + m > len(body):
+        raise Unreadable(f"counts {n}, {m} for {len(body)} lines")
+    try:
+        V = np.array([[float(x) for x in line[:3]] for line in body[:n]], dtype=np.float64).reshape(n, 3)
+        faces = [[float(x) for x in line] for line in body[n:n + m]]
+    except ValueError as e:
+        raise Unreadable(str(e))
+    polygons = []
+    for face in faces:
+        k = face[0]
+        if k != int(k) or k < 0 or len(face) < 1 + int(k):
+            raise Unreadable(f"face {face}: bad vertex count")
+        polygons.append(face[1:1 + int(k)])
+    if len({len(p) for p in polygons}) > 1:
+        raise Unreadable("faces of different sizes")
+    F = np.array(polygons, dtype=np.float64).reshape(m, len(polygons[0]) if polygons else 3)
+    if np.all(np.isfinite(F)) and np.all(F == np.round(F)) and np.all(np.abs(F) < 2**62):
+        F = F.astype(np.int64)
+    return np.ascontiguousarray(V), np.ascontiguousarray(F)
+
+
+def read_with_meshio(path):
+    """V and F as meshio reads them, in a child process: meshio may loop or exit on
+    hostile files."""
+    script = (
+        "import sys, meshio, numpy as np\n"
+        "m = meshio.read(sys.argv[1])\n"
+        "tri = [c.data for c in m.cells if c.type == 'triangle']\n"
+        "F = np.concatenate(tri) if tri else (m.cells[0].data if m.cells else np.zeros((0, 3), np.int64))\n"
+        "np.savez(sys.argv[2], V=np.asarray(m.points, dtype=np.float64), F=F)\n")
+    with tempfile.TemporaryDirectory() as work:
+        out = os.path.join(work, "mesh.npz")
+        try:
+            result = subprocess.run([sys.executable, "-c", script, path, out], capture_output=True, text=True,
+                                    timeout=30)
+        except subprocess.TimeoutExpired:
+            raise Unreadable("meshio did not finish in 30 s")
+        if result.returncode != 0:
+            raise Unreadable("meshio: " + (result.stderr.strip().splitlines() or ["failed"])[-1])
+        arrays = np.load(out)
+        return np.ascontiguousarray(arrays["V"]), np.ascontiguousarray(arrays["F"])
+
+
+@pytest.mark.parametrize("name", HOSTILE_FILES)
+def test_hostile_file(name):
+    path = os.path.join(HOSTILE_DIR, name)
+    try:
+        V, F = read_off(path) if name.endswith(".off") else read_with_meshio(path)
+    except (Unreadable, UnicodeDecodeError) as e:  # no arrays to give the binding
+        pytest.skip(f"{name} cannot be read into arrays: {e}")
+    for function in ("normal_signature", "HeatDiffusion", "multiscale_features", "denoise"):
+        try:
+            result = ALL_FUNCTIONS[function](V, F)
+        except ValueError as e:
+            assert str(e), f"{name}: {function}: ValueError without a message"
+            continue
+        if isinstance(result, np.ndarray):
+            assert np.all(np.isfinite(result)), f"{name}: {function}: non-finite result"
+        if isinstance(result, hd.HeatDiffusion):
+            f = result.diffuse(result.normal_signature(), [0, 5])
+            assert np.all(np.isfinite(f))
+            assert abs(f[1].sum() - f[0].sum()) <= 1e-12 * max(1.0, np.abs(f[0]).sum())
+
+
+def test_arguments_of_the_wrong_type():
+    V, F = TETRA_V, TETRA_F
+    cases = [
+        (lambda: hd.HeatDiffusion(V, F, m="many"), "m must be a whole number or None"),
+        (lambda: hd.HeatDiffusion(V, F, m=2.5), "m must be a whole number or None"),
+        (lambda: hd.HeatDiffusion(V, F, coarse=[4]), "coarse must be a whole number or None"),
+        (lambda: hd.HeatDiffusion(V, F, kernel=1), "kernel must be 'local', 'spectral' or None"),
+        (lambda: hd.filter_shape(V, F, "13"), "weights must be a sequence of numbers"),
+        (lambda: hd.synthesize(np.zeros((1, 4)), np.zeros(4), None), "weights must be a sequence of numbers"),
+        (lambda: hd.denoise(V, F, number_of_iterations=1.5), "number_of_iterations must be a whole number"),
+        (lambda: hd.denoise(V, F, normal_sigma="wide"), "normal_sigma must be a number or None"),
+        (lambda: hd.filter_shape(V, F, [1.0], steps_per_level="5"), "steps_per_level must be a number or None"),
+        (lambda: hd.filter_shape(V, F, [1.0], anchor_weight=[1.0]), "anchor_weight must be a number or None"),
+        (lambda: hd.decompose(V, F, steps_per_level=True), "steps_per_level must be a number or None"),
+    ]
+    for function, message in cases:
+        with pytest.raises(ValueError, match=message):
+            function()
