@@ -307,6 +307,7 @@ struct Diffusion_options
   std::size_t eigenpairs = 150;
   double coarse = -1;  // the package's automatic coarse level
   bool scale_invariant = false;
+  HD::Operator_normalization normalization = HD::Operator_normalization::balanced;
 };
 
 // An optional whole-number argument (None: not given), with a ValueError that names it.
@@ -389,7 +390,8 @@ auto diffusion_parameters(const Diffusion_options& o, std::function<bool(double)
   return HD::parameters::combine(
       HD::parameters::sigma(o.sigma), HD::parameters::time(o.time), HD::parameters::kernel_method(o.method),
       HD::parameters::number_of_eigenpairs(o.eigenpairs), HD::parameters::scale_invariant_kernel(o.scale_invariant),
-      HD::parameters::coarse_vertex_count(o.coarse), HD::parameters::progress_callback(std::move(progress)));
+      HD::parameters::coarse_vertex_count(o.coarse), HD::parameters::operator_normalization(o.normalization),
+      HD::parameters::progress_callback(std::move(progress)));
 }
 
 // A field by the package's vertex index, from input order, and back.
@@ -491,10 +493,22 @@ class Heat_diffusion
 {
 public:
   Heat_diffusion(py::object V, py::object F, double sigma, double time, py::object kernel, py::object m,
-                 py::object coarse, bool scale_invariant, py::object progress)
+                 py::object coarse, bool scale_invariant, py::object normalization, py::object progress)
     : mesh_(make_mesh(V, F, "HeatDiffusion"))
   {
-    const Diffusion_options o = diffusion_options("HeatDiffusion", sigma, time, kernel, m, coarse, scale_invariant);
+    Diffusion_options o = diffusion_options("HeatDiffusion", sigma, time, kernel, m, coarse, scale_invariant);
+    // operator_normalization: 'balanced' (the default, doubly stochastic) or 'columns' (the paper's)
+    if(!normalization.is_none())
+    {
+      const std::string name = py::isinstance<py::str>(normalization) ? normalization.cast<std::string>() : "";
+      if(name == "balanced")
+        o.normalization = HD::Operator_normalization::balanced;
+      else if(name == "columns")
+        o.normalization = HD::Operator_normalization::columns;
+      else
+        invalid("HeatDiffusion", "normalization must be 'balanced', 'columns' or None, not " +
+                                     (name.empty() ? type_name(normalization) : "'" + name + "'"));
+    }
     Python_progress guard(std::move(progress));
     const auto np = diffusion_parameters(o, guard.callback());
     diffusion_ = guard.run([&] { return std::make_unique<Diffusion>(*mesh_, np); });
@@ -505,6 +519,10 @@ public:
   std::string kernel() const
   {
     return diffusion_->kernel_method() == HD::Heat_kernel_method::local ? "local" : "spectral";
+  }
+  std::string normalization() const
+  {
+    return diffusion_->operator_normalization() == HD::Operator_normalization::balanced ? "balanced" : "columns";
   }
 
   py::array_t<double> normal_signature() const
@@ -697,7 +715,7 @@ py::list multiscale_features(py::object V, py::object F, py::object field, py::o
                              double sigma, double time, py::object kernel, py::object m, py::object coarse,
                              bool scale_invariant, py::object progress)
 {
-  const Heat_diffusion diffusion(V, F, sigma, time, kernel, m, coarse, scale_invariant, progress);
+  const Heat_diffusion diffusion(V, F, sigma, time, kernel, m, coarse, scale_invariant, py::none(), progress);
   return diffusion.features(field, steps, feature_threshold);
 }
 
@@ -705,7 +723,7 @@ py::tuple decompose(py::object V, py::object F, py::object field, std::size_t le
                     double sigma, double time, py::object kernel, py::object m, py::object coarse,
                     bool scale_invariant, py::object progress)
 {
-  const Heat_diffusion diffusion(V, F, sigma, time, kernel, m, coarse, scale_invariant, progress);
+  const Heat_diffusion diffusion(V, F, sigma, time, kernel, m, coarse, scale_invariant, py::none(), progress);
   return diffusion.decompose(field, levels, steps_per_level);
 }
 
@@ -887,6 +905,7 @@ const char* const diffusion_arguments_doc =
     "to area = vertex count; kernel: 'local', 'spectral' or None (local unless m or coarse is given);\n"
     "m: number_of_eigenpairs of the spectral kernel (default 150); coarse: coarse_vertex_count of its\n"
     "eigen solve (None: automatic, 0: none); scale_invariant: the kernel of eq. 14 (spectral);\n"
+    "normalization (HeatDiffusion): 'balanced' (None, the default: A_t doubly stochastic) or 'columns' (the paper's);\n"
     "progress: None or a callable f(fraction) called during the construction; returning False cancels\n"
     "it with RuntimeError (None continues). Ctrl-C cancels it too (KeyboardInterrupt).\n";
 
@@ -904,14 +923,16 @@ PYBIND11_MODULE(cgal_heat_diffusion, module)
                              (std::string("The operator A_t of the mesh (V, F), built once, applied many times.\n") +
                               diffusion_arguments_doc)
                                  .c_str())
-      .def(py::init<py::object, py::object, double, double, py::object, py::object, py::object, bool, py::object>(),
+      .def(py::init<py::object, py::object, double, double, py::object, py::object, py::object, bool, py::object,
+                    py::object>(),
            py::arg("V"), py::arg("F"), py::kw_only(), py::arg("sigma") = 0.1, py::arg("time") = 1.0,
            py::arg("kernel") = py::none(), py::arg("m") = py::none(), py::arg("coarse") = py::none(),
-           py::arg("scale_invariant") = false, py::arg("progress") = py::none())
+           py::arg("scale_invariant") = false, py::arg("normalization") = py::none(), py::arg("progress") = py::none())
       .def("diffuse", &Heat_diffusion::diffuse, py::arg("field"), py::arg("steps") = 1,
            "F^k = A_t^k F^0. steps: one k (returns an (n,) array) or a list of them (returns a (len, n) array).")
       .def("operator_matrix", &Heat_diffusion::operator_matrix,
-           "A_t as a scipy.sparse.csc_matrix in the input's vertex order; every column sums to 1.")
+           "A_t as a scipy.sparse.csc_matrix in the input's vertex order: symmetric, every row and column\n"
+           "summing to 1 (normalization 'balanced', the default), or every column (normalization 'columns').")
       .def("region_statistics", &Heat_diffusion::region_statistics,
            "Sizes of the heat regions: min_size, mean_size, max_size, collapsed_regions, capped_regions.")
       .def("normal_signature", &Heat_diffusion::normal_signature, "The Normal Signature of the mesh, (n,).")
@@ -925,7 +946,8 @@ PYBIND11_MODULE(cgal_heat_diffusion, module)
            "steps_per_level None: decompose_field()'s default.")
       .def_property_readonly("number_of_vertices", &Heat_diffusion::number_of_vertices)
       .def_property_readonly("time", &Heat_diffusion::time)
-      .def_property_readonly("kernel", &Heat_diffusion::kernel, "'local' or 'spectral'");
+      .def_property_readonly("kernel", &Heat_diffusion::kernel, "'local' or 'spectral'")
+      .def_property_readonly("normalization", &Heat_diffusion::normalization, "'balanced' or 'columns'");
 
   module.def("normal_signature", &normal_signature, py::arg("V"), py::arg("F"),
              "The Normal Signature (n,): > 0 convex, < 0 concave, 0 flat.");
