@@ -7,7 +7,8 @@ cd "$(dirname "$0")/.."
 
 packages=(g++ cmake make python3 libcgal-dev libcgal-demo libeigen3-dev libboost-dev libspectra-dev
           libsuitesparse-dev libtbb-dev clang libclang-rt-14-dev ninja-build
-          doxygen python3-matplotlib python3-numpy)  # the reference manual; scripts/render.py
+          doxygen python3-matplotlib python3-numpy  # the reference manual; scripts/render.py
+          time)  # /usr/bin/time -v: benchmark/Heat_diffusion/compile_cost.sh
 missing=()
 for p in "${packages[@]}"; do
   dpkg-query -W -f='${Status}' "$p" 2>/dev/null | grep -q "install ok installed" || missing+=("$p")
