@@ -17,7 +17,7 @@ if(DOXYGEN_FOUND)
     WORKING_DIRECTORY "${CGAL_HEAT_DIFFUSION_DOC_OUTPUT_DIR}"
     COMMENT "Building the Heat_diffusion manual and reference with Doxygen"
     VERBATIM)
-  if(BUILD_TESTING)
+  if(CGAL_HEAT_DIFFUSION_TESTING)
     # Runs doxygen (non-zero at the end of the run when it printed a warning), then
     # checks groups and examples (see the script).
     add_test(NAME doc_heat_diffusion
@@ -36,7 +36,7 @@ else()
     COMMAND "${CMAKE_COMMAND}" -E echo "doxygen not found (Debian: apt-get install doxygen)"
     COMMAND "${CMAKE_COMMAND}" -E false
     VERBATIM)
-  if(BUILD_TESTING)
+  if(CGAL_HEAT_DIFFUSION_TESTING)
     # Reported as "Skipped" by CTest, not passed: the reference was not checked.
     add_test(NAME doc_heat_diffusion
              COMMAND "${CMAKE_COMMAND}" -E echo "doxygen not found (Debian: doxygen): reference not checked")

@@ -48,7 +48,7 @@ install(FILES "${PROJECT_BINARY_DIR}/cmake/CGAL_Heat_diffusionConfig.cmake"
 
 # The CTest case: install into a temporary prefix, configure, build and run the
 # consumer project against the installed copy (not this source tree).
-if(BUILD_TESTING)
+if(CGAL_HEAT_DIFFUSION_TESTING)
   add_test(NAME install_heat_diffusion
            COMMAND "${CMAKE_COMMAND}"
                    "-DBINARY_DIR=${PROJECT_BINARY_DIR}"
