@@ -402,7 +402,7 @@ inline void fit_vertices_to_normals(const Indexed_mesh& mesh, const Face_adjacen
 ///     \cgalParamDefault{`Area_weighted_vertex_normals()`}
 ///   \cgalParamNEnd
 ///   \cgalParamNBegin{vertex_index_map}
-///     \cgalParamDescription{a property map associating to each vertex of `tm` a unique index in `[0, num_vertices(tm))`}
+///     \cgalParamDescription{a property map associating to each vertex of `tm` a unique index in `[0, n)`, `n` the number of vertices in `vertices(tm)` (removed vertices of a `Surface_mesh` are not counted)}
 ///     \cgalParamType{a model of `ReadablePropertyMap` with `vertex_descriptor` as key and `std::size_t` as value type}
 ///     \cgalParamDefault{an automatically indexed internal map}
 ///   \cgalParamNEnd
@@ -480,12 +480,14 @@ void denoise_mesh(TriangleMesh& tm, const NamedParameters& np = parameters::defa
     internal::throw_invalid_input("denoise_mesh: normal_sigma must be positive and finite");
   if(!(displacement_limit > 0))
     internal::throw_invalid_input("denoise_mesh: displacement_limit must be positive");
-  if(num_vertices(tm) == 0 || iterations < 1)
+  if(internal::number_of_listed_vertices(tm) == 0 || iterations < 1)
     return;
 
   auto vpm = choose_parameter(get_parameter(np, CGAL::internal_np::vertex_point),
                               get_property_map(CGAL::vertex_point, tm));
-  const auto vim = CGAL::get_initialized_vertex_index_map(tm, np);
+  // The user's numbering or the rank in vertices(tm), without gaps where a
+  // Surface_mesh has removed vertices.
+  const auto vim = internal::vertex_numbering(tm, np);
   const GeomTraits gt = choose_parameter<GeomTraits>(get_parameter(np, CGAL::internal_np::geom_traits));
   const Rule rule = choose_parameter<Rule>(get_parameter(np, internal_np::vertex_normal_rule));
   const auto mesh_parameters =
