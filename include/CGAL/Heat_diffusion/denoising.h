@@ -43,36 +43,7 @@ enum class Denoising_method
   signature_diffusion
 };
 
-/// \cond SKIP_IN_MANUAL
-namespace internal_np {
-enum denoising_method_t { denoising_method };
-enum normal_sigma_t { normal_sigma };
-enum displacement_limit_t { displacement_limit };
-} // namespace internal_np
-/// \endcond
-
-namespace parameters {
-/// The algorithm of `denoise_mesh()`, a `Denoising_method`.
-template <typename T>
-CGAL::Named_function_parameters<T, internal_np::denoising_method_t> denoising_method(const T& value)
-{
-  return CGAL::Named_function_parameters<T, internal_np::denoising_method_t>(value);
-}
-/// The width \f$ \sigma_n \f$ of the normal weights \f$ \exp(-|n_f - n_g|^2 / 2\sigma_n^2) \f$ of
-/// `denoise_mesh()` (`Denoising_method::normal_filtering`).
-template <typename T>
-CGAL::Named_function_parameters<T, internal_np::normal_sigma_t> normal_sigma(const T& value)
-{
-  return CGAL::Named_function_parameters<T, internal_np::normal_sigma_t>(value);
-}
-/// The bound on the root mean square displacement of `denoise_mesh()`
-/// (`Denoising_method::normal_filtering`), in multiples of the estimated noise level.
-template <typename T>
-CGAL::Named_function_parameters<T, internal_np::displacement_limit_t> displacement_limit(const T& value)
-{
-  return CGAL::Named_function_parameters<T, internal_np::displacement_limit_t>(value);
-}
-} // namespace parameters
+// The named parameters denoising_method, normal_sigma and displacement_limit are in parameters.h.
 
 /// \cond SKIP_IN_MANUAL
 namespace internal {
