@@ -3,6 +3,8 @@
 # FAIL_ON_WARNINGS in doc/Heat_diffusion/Doxyfile.in). Included by the top-level
 # CMakeLists.txt.
 find_package(Doxygen QUIET)
+# The check of undocumented members reads Doxygen's XML with Python.
+find_program(CGAL_HEAT_DIFFUSION_PYTHON NAMES python3 python)
 
 set(CGAL_HEAT_DIFFUSION_SOURCE_DIR "${PROJECT_SOURCE_DIR}")
 set(CGAL_HEAT_DIFFUSION_DOC_OUTPUT_DIR "${PROJECT_BINARY_DIR}/doc/Heat_diffusion")
@@ -24,6 +26,7 @@ if(DOXYGEN_FOUND)
              COMMAND "${CMAKE_COMMAND}" "-DDOXYGEN=${DOXYGEN_EXECUTABLE}"
                      "-DDOXYFILE=${CGAL_HEAT_DIFFUSION_DOC_OUTPUT_DIR}/Doxyfile"
                      "-DSOURCE_DIR=${PROJECT_SOURCE_DIR}"
+                     "-DPYTHON=${CGAL_HEAT_DIFFUSION_PYTHON}"
                      -P "${CMAKE_CURRENT_LIST_DIR}/CGAL_Heat_diffusion_check_doc.cmake")
     # Also catches the warnings of a Doxygen that does not return an error.
     set_tests_properties(doc_heat_diffusion PROPERTIES

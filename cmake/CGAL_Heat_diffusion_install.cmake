@@ -15,6 +15,9 @@ set(CGAL_HEAT_DIFFUSION_INSTALL_CMAKEDIR "${CMAKE_INSTALL_DATADIR}/CGAL_Heat_dif
 install(DIRECTORY "${PROJECT_SOURCE_DIR}/include/CGAL/Heat_diffusion"
         DESTINATION "${CMAKE_INSTALL_INCLUDEDIR}/CGAL"
         FILES_MATCHING PATTERN "*.h")
+# The umbrella header, which includes the whole public API.
+install(FILES "${PROJECT_SOURCE_DIR}/include/CGAL/Heat_diffusion.h"
+        DESTINATION "${CMAKE_INSTALL_INCLUDEDIR}/CGAL")
 
 install(TARGETS Heat_diffusion EXPORT CGAL_Heat_diffusionTargets)
 install(EXPORT CGAL_Heat_diffusionTargets

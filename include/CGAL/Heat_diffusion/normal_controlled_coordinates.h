@@ -63,8 +63,11 @@ template <typename TriangleMesh,
 class Normal_controlled_coordinates
 {
 public:
+  /// The vertex type of `TriangleMesh`.
   typedef typename boost::graph_traits<TriangleMesh>::vertex_descriptor vertex_descriptor;
+  /// The vector type of the NCC and the normals.
   typedef typename GeomTraits::Vector_3 Vector_3;
+  /// The number type of `GeomTraits`.
   typedef typename GeomTraits::FT FT;
   /// The sparse matrix type of the NCC operator.
   typedef Eigen::SparseMatrix<double> Sparse_matrix;
