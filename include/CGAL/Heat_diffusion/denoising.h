@@ -428,8 +428,8 @@ void denoise_mesh(TriangleMesh& tm, const NamedParameters& np = parameters::defa
   const double anchor_weight = choose_parameter(get_parameter(np, internal_np::anchor_weight), 0.7);
   const Heat_kernel_method kernel_method = internal::resolve_kernel_method<NamedParameters>(
       choose_parameter(get_parameter(np, internal_np::kernel_method), Heat_kernel_method::automatic), false);
-  // -1: the automatic choice of Edge_weighted_heat_kernel.
-  const double coarse_vertex_count = double(choose_parameter(get_parameter(np, internal_np::coarse_vertex_count), -1));
+  // -1: the automatic choice of Edge_weighted_heat_kernel; passed on as given (an integer).
+  const auto coarse_vertex_count = choose_parameter(get_parameter(np, internal_np::coarse_vertex_count), -1);
   const double user_normal_sigma = choose_parameter(get_parameter(np, internal_np::normal_sigma), 0.);
   const bool automatic_normal_sigma = parameters::is_default_parameter<NamedParameters, internal_np::normal_sigma_t>::value;
   const double displacement_limit = choose_parameter(get_parameter(np, internal_np::displacement_limit), 1.1);
