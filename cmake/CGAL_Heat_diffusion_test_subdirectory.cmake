@@ -1,11 +1,13 @@
 # The CTest case subdirectory_heat_diffusion: configures and builds the project
 # CONSUMER_SOURCE_DIR, which adds the package (SOURCE_DIR) with add_subdirectory(),
 # and checks that the package behaves as a sub-project should:
-#   - it leaves the parent's cache alone: no BUILD_TESTING switched on, no build type
-#     set (the consumer is configured without one);
+#   - it leaves the parent's cache alone: no BUILD_TESTING (ON would build the
+#     package's tests, OFF would switch off those of a parent that includes CTest
+#     later), no build type (the consumer is configured without one);
 #   - it adds no tool, example, test, benchmark, manual or mesh data to the parent's
 #     build tree: only the target CGAL::Heat_diffusion (the consumer builds and runs);
-#   - in a parent that includes CTest, the parent's test is the only one.
+#   - in a parent that includes CTest, before or after adding the package, the
+#     parent's test is the only one.
 # Usage: cmake -DSOURCE_DIR=... -DCONSUMER_SOURCE_DIR=... -DWORK_DIR=... [-DGENERATOR=...]
 #        [-DCXX_COMPILER=...] -P CGAL_Heat_diffusion_test_subdirectory.cmake
 foreach(var SOURCE_DIR CONSUMER_SOURCE_DIR WORK_DIR)
@@ -47,8 +49,8 @@ run_step("configure the consumer"
   "-DHEAT_DIFFUSION_SOURCE_DIR=${SOURCE_DIR}")
 
 file(STRINGS "${build}/CMakeCache.txt" cache_build_testing REGEX "^BUILD_TESTING:")
-if(cache_build_testing MATCHES "=(ON|on|1|TRUE|true|YES|yes)$")
-  problem("the parent's cache has ${cache_build_testing}: the package switched testing on")
+if(cache_build_testing)
+  problem("the parent's cache has ${cache_build_testing}, but the parent does not use CTest")
 endif()
 file(STRINGS "${build}/CMakeCache.txt" cache_build_type REGEX "^CMAKE_BUILD_TYPE:")
 if(cache_build_type AND NOT cache_build_type MATCHES "=$")
@@ -91,19 +93,22 @@ if(NOT consumer)
 endif()
 run_step("run the consumer" "${consumer}")
 
-# 2. A parent that includes CTest: its own test is the only one (configured only).
-set(build "${WORK_DIR}/with_ctest")
-file(REMOVE "${build}/CMakeCache.txt")
-run_step("configure the consumer with CTest"
-  "${CMAKE_COMMAND}" -S "${CONSUMER_SOURCE_DIR}" -B "${build}" ${generator_args} ${compiler_args}
-  "-DHEAT_DIFFUSION_SOURCE_DIR=${SOURCE_DIR}" -DCONSUMER_USES_CTEST=ON)
-execute_process(COMMAND "${CMAKE_CTEST_COMMAND}" -N WORKING_DIRECTORY "${build}" OUTPUT_VARIABLE ctest_list)
-if(NOT ctest_list MATCHES "Total Tests: 1\n" OR NOT ctest_list MATCHES "subdirectory_consumer")
-  problem("the parent has one test, subdirectory_consumer, but ctest lists:\n${ctest_list}")
-endif()
-if(EXISTS "${build}/data")
-  problem("the package unpacked mesh data into the parent's build tree (${build}/data)")
-endif()
+# 2. A parent that includes CTest, before or after adding the package: its own test
+#    is the only one, and is there (configured only).
+foreach(when BEFORE AFTER)
+  set(build "${WORK_DIR}/ctest_${when}")
+  file(REMOVE_RECURSE "${build}")
+  run_step("configure the consumer with CTest ${when} the package"
+    "${CMAKE_COMMAND}" -S "${CONSUMER_SOURCE_DIR}" -B "${build}" ${generator_args} ${compiler_args}
+    "-DHEAT_DIFFUSION_SOURCE_DIR=${SOURCE_DIR}" -DCONSUMER_USES_CTEST=${when})
+  execute_process(COMMAND "${CMAKE_CTEST_COMMAND}" -N WORKING_DIRECTORY "${build}" OUTPUT_VARIABLE ctest_list)
+  if(NOT ctest_list MATCHES "Total Tests: 1\n" OR NOT ctest_list MATCHES "subdirectory_consumer")
+    problem("with CTest ${when} the package, the parent has one test, subdirectory_consumer, but ctest lists:\n${ctest_list}")
+  endif()
+  if(EXISTS "${build}/data")
+    problem("the package unpacked mesh data into the parent's build tree (${build}/data)")
+  endif()
+endforeach()
 
 if(problems)
   list(LENGTH problems count)
