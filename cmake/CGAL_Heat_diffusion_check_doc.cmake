@@ -4,12 +4,18 @@
 #   - every `\ingroup G` of the manual and the public headers names a `\defgroup G`
 #     (Doxygen silently drops the free functions of an unknown group);
 #   - every `\cgalExample{F}` names a file of examples/;
-#   - every example of examples/Heat_diffusion/ is quoted by the manual (\cgalExample).
-# With MATHJAX_DIR set (not empty), MathJax is copied beside the pages afterwards, as
-# the target `doc` does (CGAL_Heat_diffusion_doc_mathjax.cmake).
-# Usage: cmake -DDOXYGEN=... -DDOXYFILE=... -DSOURCE_DIR=... [-DMATHJAX_DIR=...]
+#   - every example of examples/Heat_diffusion/ is quoted by the manual (\cgalExample);
+#   - every public class and member of include/CGAL/ is documented: Doxygen drops an
+#     undocumented one from the reference without a warning (HIDE_UNDOC_MEMBERS), so a
+#     second run with EXTRACT_ALL writes the XML of everything, which
+#     CGAL_Heat_diffusion_undocumented.py (PYTHON) reads;
+#   - the umbrella header CGAL/Heat_diffusion.h includes every public header, and
+#     nothing of internal/.
+# With MATHJAX_DIR set (not empty), MathJax is copied beside the pages after the first
+# run, as the target `doc` does (CGAL_Heat_diffusion_doc_mathjax.cmake).
+# Usage: cmake -DDOXYGEN=... -DDOXYFILE=... -DSOURCE_DIR=... -DPYTHON=... [-DMATHJAX_DIR=...]
 #              -P CGAL_Heat_diffusion_check_doc.cmake
-foreach(var DOXYGEN DOXYFILE SOURCE_DIR)
+foreach(var DOXYGEN DOXYFILE SOURCE_DIR PYTHON)
   if(NOT DEFINED ${var})
     message(FATAL_ERROR "CGAL_Heat_diffusion_check_doc.cmake: ${var} is not set")
   endif()
@@ -74,6 +80,57 @@ foreach(example IN LISTS examples)
     math(EXPR problems "${problems} + 1")
   endif()
 endforeach()
+
+# Everything public is documented.
+set(all_doxyfile "${doc_output_dir}/Doxyfile_extract_all")
+file(WRITE "${all_doxyfile}" "@INCLUDE = \"${DOXYFILE}\"
+EXTRACT_ALL = YES
+HIDE_UNDOC_MEMBERS = NO
+HIDE_UNDOC_CLASSES = NO
+GENERATE_HTML = NO
+GENERATE_XML = YES
+XML_OUTPUT = xml_extract_all
+GENERATE_TAGFILE =
+WARNINGS = NO
+WARN_AS_ERROR = NO
+")
+file(REMOVE_RECURSE "${doc_output_dir}/xml_extract_all")
+execute_process(COMMAND "${DOXYGEN}" "${all_doxyfile}" WORKING_DIRECTORY "${doc_output_dir}"
+                RESULT_VARIABLE doxygen_result)
+if(NOT doxygen_result EQUAL 0)
+  message("error: doxygen (EXTRACT_ALL) failed (${doxygen_result})")
+  math(EXPR problems "${problems} + 1")
+endif()
+execute_process(COMMAND "${PYTHON}" "${CMAKE_CURRENT_LIST_DIR}/CGAL_Heat_diffusion_undocumented.py"
+                        "${doc_output_dir}/xml_extract_all" "${SOURCE_DIR}/include"
+                RESULT_VARIABLE undocumented_result)
+if(NOT undocumented_result EQUAL 0)
+  message("error: public classes or members without documentation (see above)")
+  math(EXPR problems "${problems} + 1")
+endif()
+
+# The umbrella header includes the public headers, and only them.
+set(umbrella "${SOURCE_DIR}/include/CGAL/Heat_diffusion.h")
+if(NOT EXISTS "${umbrella}")
+  message("${umbrella}: warning: the umbrella header is missing")
+  math(EXPR problems "${problems} + 1")
+else()
+  file(STRINGS "${umbrella}" umbrella_includes REGEX "^#include <CGAL/Heat_diffusion/")
+  foreach(header IN LISTS header_files)
+    get_filename_component(header_name "${header}" NAME)
+    list(FIND umbrella_includes "#include <CGAL/Heat_diffusion/${header_name}>" found)
+    if(found EQUAL -1)
+      message("${umbrella}: warning: does not include the public header CGAL/Heat_diffusion/${header_name}")
+      math(EXPR problems "${problems} + 1")
+    endif()
+  endforeach()
+  foreach(line IN LISTS umbrella_includes)
+    if(line MATCHES "/internal/")
+      message("${umbrella}: warning: includes an internal header: ${line}")
+      math(EXPR problems "${problems} + 1")
+    endif()
+  endforeach()
+endif()
 
 if(problems GREATER 0)
   message(FATAL_ERROR "doc_heat_diffusion: ${problems} problem(s)")

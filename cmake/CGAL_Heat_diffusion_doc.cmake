@@ -4,6 +4,8 @@
 # `doc_heat_diffusion_in_browser`, which opens every page in headless Chromium, offline,
 # and checks what a reader sees. Included by the top-level CMakeLists.txt.
 find_package(Doxygen QUIET)
+# The check of undocumented members reads Doxygen's XML with Python.
+find_program(CGAL_HEAT_DIFFUSION_PYTHON NAMES python3 python)
 
 set(CGAL_HEAT_DIFFUSION_SOURCE_DIR "${PROJECT_SOURCE_DIR}")
 set(CGAL_HEAT_DIFFUSION_DOC_OUTPUT_DIR "${PROJECT_BINARY_DIR}/doc/Heat_diffusion")
@@ -40,14 +42,16 @@ if(DOXYGEN_FOUND)
     WORKING_DIRECTORY "${CGAL_HEAT_DIFFUSION_DOC_OUTPUT_DIR}"
     COMMENT "Building the Heat_diffusion manual and reference with Doxygen"
     VERBATIM)
-  if(BUILD_TESTING)
+  if(CGAL_HEAT_DIFFUSION_TESTING)
     # Runs doxygen (non-zero at the end of the run when it printed a warning), copies
-    # MathJax beside the pages, then checks groups and examples (see the script).
+    # MathJax beside the pages, then checks groups, examples, undocumented members and
+    # the umbrella header (see the script).
     add_test(NAME doc_heat_diffusion
              COMMAND "${CMAKE_COMMAND}" "-DDOXYGEN=${DOXYGEN_EXECUTABLE}"
                      "-DDOXYFILE=${CGAL_HEAT_DIFFUSION_DOC_OUTPUT_DIR}/Doxyfile"
                      "-DSOURCE_DIR=${PROJECT_SOURCE_DIR}"
                      "-DMATHJAX_DIR=${CGAL_HEAT_DIFFUSION_MATHJAX_DIR}"
+                     "-DPYTHON=${CGAL_HEAT_DIFFUSION_PYTHON}"
                      -P "${CMAKE_CURRENT_LIST_DIR}/CGAL_Heat_diffusion_check_doc.cmake")
     # Also catches the warnings of a Doxygen that does not return an error. It builds
     # the pages that doc_heat_diffusion_in_browser opens (fixture).
@@ -87,7 +91,7 @@ else()
     COMMAND "${CMAKE_COMMAND}" -E echo "doxygen not found (Debian: apt-get install doxygen)"
     COMMAND "${CMAKE_COMMAND}" -E false
     VERBATIM)
-  if(BUILD_TESTING)
+  if(CGAL_HEAT_DIFFUSION_TESTING)
     # Reported as "Skipped" by CTest, not passed: the reference was not checked.
     add_test(NAME doc_heat_diffusion
              COMMAND "${CMAKE_COMMAND}" -E echo "doxygen not found (Debian: doxygen): reference not checked")

@@ -16,6 +16,9 @@ set(CGAL_HEAT_DIFFUSION_INSTALL_CMAKEDIR "${CMAKE_INSTALL_DATADIR}/CGAL_Heat_dif
 install(DIRECTORY "${PROJECT_SOURCE_DIR}/include/CGAL/Heat_diffusion"
         DESTINATION "${CMAKE_INSTALL_INCLUDEDIR}/CGAL"
         FILES_MATCHING PATTERN "*.h")
+# The umbrella header, which includes the whole public API.
+install(FILES "${PROJECT_SOURCE_DIR}/include/CGAL/Heat_diffusion.h"
+        DESTINATION "${CMAKE_INSTALL_INCLUDEDIR}/CGAL")
 
 # The manual, if built (target doc, or the CTest case doc_heat_diffusion): its pages
 # carry MathJax in html/mathjax, so that the installed copy renders its formulas
@@ -56,7 +59,7 @@ install(FILES "${PROJECT_BINARY_DIR}/cmake/CGAL_Heat_diffusionConfig.cmake"
 
 # The CTest case: install into a temporary prefix, configure, build and run the
 # consumer project against the installed copy (not this source tree).
-if(BUILD_TESTING)
+if(CGAL_HEAT_DIFFUSION_TESTING)
   add_test(NAME install_heat_diffusion
            COMMAND "${CMAKE_COMMAND}"
                    "-DBINARY_DIR=${PROJECT_BINARY_DIR}"

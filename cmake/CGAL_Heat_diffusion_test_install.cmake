@@ -27,7 +27,8 @@ endfunction()
 
 run_step("cmake --install" "${CMAKE_COMMAND}" --install "${BINARY_DIR}" --prefix "${prefix}")
 
-foreach(f include/CGAL/Heat_diffusion/normal_controlled_coordinates.h
+foreach(f include/CGAL/Heat_diffusion.h
+          include/CGAL/Heat_diffusion/normal_controlled_coordinates.h
           include/CGAL/Heat_diffusion/internal
           share/CGAL_Heat_diffusion/cmake/CGAL_Heat_diffusionConfig.cmake
           share/CGAL_Heat_diffusion/cmake/CGAL_Heat_diffusionConfigVersion.cmake

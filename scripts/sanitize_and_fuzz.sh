@@ -28,7 +28,9 @@ cmake -S . -B "$build" -G Ninja -DCMAKE_BUILD_TYPE=Debug -DCGAL_DO_NOT_WARN_ABOU
       -DCGAL_HEAT_DIFFUSION_BUILD_EXAMPLES=OFF -DCGAL_HEAT_DIFFUSION_BUILD_BENCHMARKS=OFF \
       -DCGAL_HEAT_DIFFUSION_BUILD_PYTHON=OFF \
       -DCGAL_HEAT_DIFFUSION_DATA_DIR="$PWD/build/data/meshes" >/dev/null
-# Not under the sanitizers: the doc and install checks (no package code runs), and
+# Not under the sanitizers: the doc, install, add_subdirectory and compile-failure
+# checks (no package code runs; compile_fail_parameters is a target that must not
+# build), and
 # the three slowest suites, 10 to 12 times slower under ASan at -O1 than at -O2:
 # test_coarse_level (simplifies armadillo, 3.5 min at -O2), test_local_heat_kernel
 # (2 min at -O2) and test_applications (1 min at -O2, 12 min under ASan on a loaded
@@ -36,7 +38,7 @@ cmake -S . -B "$build" -G Ninja -DCMAKE_BUILD_TYPE=Debug -DCGAL_DO_NOT_WARN_ABOU
 # enhancement and denoising through test_cli (every subcommand, both kernels) and the
 # fuzz target, the kernel and diffusion through test_heat_kernel_and_diffusion.
 # Every other suite runs, and only what they need is built.
-excluded='^(doc_heat_diffusion|doc_heat_diffusion_in_browser|install_heat_diffusion|test_coarse_level|test_local_heat_kernel|test_applications)$'
+excluded='^(doc_heat_diffusion|doc_heat_diffusion_in_browser|install_heat_diffusion|subdirectory_heat_diffusion|compile_fail_parameters|test_coarse_level|test_local_heat_kernel|test_applications)$'
 targets=(heat_diffusion fuzz_off_pipeline)
 for t in $(cd "$build" && ctest -N | sed -n 's/^ *Test *#[0-9]*: //p' | grep -vE "$excluded"); do
   case $t in test_cli|test_hostile_cli|fuzz_regressions) ;; *) targets+=("$t") ;; esac

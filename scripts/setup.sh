@@ -9,7 +9,8 @@ packages=(g++ cmake make python3 libcgal-dev libcgal-demo libeigen3-dev libboost
           libsuitesparse-dev libtbb-dev clang libclang-rt-14-dev ninja-build
           doxygen python3-matplotlib python3-numpy  # the reference manual; scripts/render.py
           pybind11-dev python3-pybind11 python3-dev python3-scipy python3-meshio python3-pytest  # the Python module
-          libjs-mathjax chromium)  # the manual's formulas offline; checked in a browser
+          libjs-mathjax chromium  # the manual's formulas offline; checked in a browser
+          time)  # /usr/bin/time -v: benchmark/Heat_diffusion/compile_cost.sh
 missing=()
 for p in "${packages[@]}"; do
   dpkg-query -W -f='${Status}' "$p" 2>/dev/null | grep -q "install ok installed" || missing+=("$p")

@@ -305,7 +305,7 @@ struct Diffusion_options
   double time = 1.;
   HD::Heat_kernel_method method = HD::Heat_kernel_method::local;
   std::size_t eigenpairs = 150;
-  double coarse = -1;  // the package's automatic coarse level
+  long long coarse = -1;  // the package's automatic coarse level
   bool scale_invariant = false;
   HD::Operator_normalization normalization = HD::Operator_normalization::balanced;
 };
@@ -341,6 +341,15 @@ std::optional<double> optional_number(const py::object& value, const std::string
   return value.cast<double>();
 }
 
+// An optional whole number (None: the C++ function's own default).
+std::optional<long long> optional_whole_number(const py::object& value, const std::string& function,
+                                               const std::string& name)
+{
+  if(value.is_none())
+    return std::nullopt;
+  return whole_number(value, function, name);
+}
+
 Diffusion_options diffusion_options(const std::string& function, double sigma, double time, const py::object& kernel,
                                     const py::object& m, const py::object& coarse, bool scale_invariant)
 {
@@ -360,7 +369,7 @@ Diffusion_options diffusion_options(const std::string& function, double sigma, d
     const long long value = whole_number(coarse, function, "coarse");
     if(value < 0 || (value > 0 && value < 4))
       invalid(function, "coarse (coarse_vertex_count) must be 0 (none) or at least 4, not " + std::to_string(value));
-    o.coarse = double(value);
+    o.coarse = value;
   }
   const bool eigenpairs_requested = !m.is_none() || !coarse.is_none() || scale_invariant;
   if(kernel.is_none())
@@ -658,8 +667,8 @@ public:
     const std::size_t n = number_of_vertices();
     std::vector<double> values = field.is_none() ? normal_signature().cast<std::vector<double> >()
                                                  : field_array(field, n, "HeatDiffusion.decompose");
-    const std::optional<double> steps_per_level =
-        optional_number(steps_object, "HeatDiffusion.decompose", "steps_per_level");
+    const std::optional<long long> steps_per_level =
+        optional_whole_number(steps_object, "HeatDiffusion.decompose", "steps_per_level");
     py::array_t<double> bands({py::ssize_t(levels), py::ssize_t(n)});
     py::array_t<double> residual(static_cast<py::ssize_t>(n));
     double* band_data = bands.mutable_data();
@@ -772,7 +781,7 @@ py::array_t<double> filter_shape(py::object V, py::object F, py::object weights_
   auto mesh = make_mesh(V, F, function);
   const Diffusion_options o = diffusion_options(function, sigma, time, kernel, m, coarse, scale_invariant);
   const std::vector<double> weights = number_list(weights_object, function, "weights");
-  const std::optional<double> steps_per_level = optional_number(steps_object, function, "steps_per_level");
+  const std::optional<long long> steps_per_level = optional_whole_number(steps_object, function, "steps_per_level");
   const std::optional<double> anchor_weight = optional_number(anchor_object, function, "anchor_weight");
   Python_progress guard(std::move(progress));
   const auto np = diffusion_parameters(o, guard.callback());

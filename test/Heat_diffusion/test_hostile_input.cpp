@@ -11,12 +11,18 @@
 
 #include <CGAL/Heat_diffusion/Anisotropic_heat_diffusion.h>
 #include <CGAL/Heat_diffusion/Edge_weighted_heat_kernel.h>
+#include <CGAL/Heat_diffusion/decomposition.h>
+#include <CGAL/Heat_diffusion/denoising.h>
 #include <CGAL/Heat_diffusion/multiscale_features.h>
 #include <CGAL/Heat_diffusion/normal_controlled_coordinates.h>
 #include <CGAL/Heat_diffusion/reconstruction.h>
 
 #include <CGAL/Exact_predicates_inexact_constructions_kernel.h>
 #include <CGAL/IO/OFF.h>
+#include <CGAL/Polyhedron_3.h>
+#include <CGAL/Polyhedron_items_with_id_3.h>
+#include <CGAL/Polygon_mesh_processing/triangulate_faces.h>
+#include <CGAL/boost/graph/Euler_operations.h>
 #include <CGAL/Polygon_mesh_processing/orient_polygon_soup.h>
 #include <CGAL/Polygon_mesh_processing/polygon_soup_to_polygon_mesh.h>
 #include <CGAL/Subdivision_method_3/subdivision_methods_3.h>
@@ -34,6 +40,7 @@
 #include <fstream>
 #include <limits>
 #include <map>
+#include <set>
 #include <sstream>
 #include <string>
 #include <vector>
@@ -559,6 +566,254 @@ void check_iterative_solver_on_components()
 
 } // namespace
 
+// A mesh with removed elements, as CGAL's editing leaves it: vertex `removed` taken
+// out with Euler::remove_center_vertex() and its hole triangulated, without
+// collect_garbage(). num_vertices() still counts the removed vertex.
+template <typename PolygonMesh>
+void remove_a_vertex(PolygonMesh& mesh, std::size_t removed)
+{
+  auto v = *std::next(vertices(mesh).begin(), std::ptrdiff_t(removed));
+  CGAL::Euler::remove_center_vertex(halfedge(v, mesh), mesh);
+  PMP::triangulate_faces(mesh);
+}
+
+// Values per vertex, keyed by position: collect_garbage() renumbers the vertices.
+typedef std::map<Point, double> Field_by_point;
+
+template <typename PolygonMesh, typename Map>
+Field_by_point by_point(const PolygonMesh& mesh, const Map& map)
+{
+  Field_by_point result;
+  for(auto v : vertices(mesh))
+    result[get(CGAL::vertex_point, mesh, v)] = double(get(map, v));
+  return result;
+}
+
+template <typename PolygonMesh>
+std::map<Point, Point> points_by_point(const PolygonMesh& before, const PolygonMesh& after)
+{
+  // after has the vertices of before, in the same order
+  std::map<Point, Point> result;
+  auto a = vertices(after).begin();
+  for(auto v : vertices(before))
+    result[get(CGAL::vertex_point, before, v)] = get(CGAL::vertex_point, after, *a++);
+  return result;
+}
+
+double largest_difference(const Field_by_point& a, const Field_by_point& b)
+{
+  if(a.size() != b.size())
+    return inf;
+  double worst = 0, scale = 0;
+  for(auto i = a.begin(), j = b.begin(); i != a.end(); ++i, ++j)
+  {
+    if(i->first != j->first)
+      return inf;
+    worst = (std::max)(worst, std::abs(i->second - j->second));
+    scale = (std::max)(scale, std::abs(i->second));
+  }
+  return worst / (std::max)(scale, 1e-300);
+}
+
+double largest_difference(const std::map<Point, Point>& a, const std::map<Point, Point>& b)
+{
+  if(a.size() != b.size())
+    return inf;
+  double worst = 0;
+  for(auto i = a.begin(), j = b.begin(); i != a.end(); ++i, ++j)
+  {
+    if(i->first != j->first)
+      return inf;
+    worst = (std::max)(worst, std::sqrt(CGAL::squared_distance(i->second, j->second)));
+  }
+  return worst;
+}
+
+template <typename PolygonMesh, typename VertexRange>
+std::set<Point> points_of(const PolygonMesh& mesh, const VertexRange& range)
+{
+  std::set<Point> result;
+  for(auto v : range)
+    result.insert(get(CGAL::vertex_point, mesh, v));
+  return result;
+}
+
+// Every public function on a Surface_mesh with a removed vertex gives what it gives
+// after collect_garbage() (the same values at the same positions, up to the rounding
+// of a different vertex order); so does a Polyhedron_3 whose vertex ids have the gap
+// of the removed vertex. A user's vertex_index_map is honoured, and one with gaps is
+// rejected with a message that says why.
+void check_removed_elements()
+{
+  const std::size_t removed = 100;
+  Mesh garbage = test_support::load<Mesh>("elephant.off");
+  remove_a_vertex(garbage, removed);
+  CHECK(garbage.has_garbage() && num_vertices(garbage) == garbage.number_of_vertices() + 1);
+  Mesh clean = garbage;
+  clean.collect_garbage();
+  // What goes through the local heat kernel agrees to its truncation only: the
+  // regions it grows, hence what it truncates, follow the vertex order.
+  auto close = [&](double error, const std::string& what, double tolerance = 1e-9) {
+    CHECK_MESSAGE(error <= tolerance, "removed elements: " << what << " differs after collect_garbage() by "
+                                                           << error);
+  };
+
+  // NCC, NS, the NCC operator.
+  try
+  {
+    auto ns_garbage = garbage.add_property_map<Vertex, double>("v:ns_test", 0.).first;
+    auto ns_clean = clean.add_property_map<Vertex, double>("v:ns_test", 0.).first;
+    HD::compute_normal_signature(garbage, ns_garbage);
+    HD::compute_normal_signature(clean, ns_clean);
+    close(largest_difference(by_point(garbage, ns_garbage), by_point(clean, ns_clean)), "compute_normal_signature");
+
+    auto ncc_garbage = garbage.add_property_map<Vertex, K::Vector_3>("v:ncc_test").first;
+    HD::compute_normal_controlled_coordinates(garbage, ncc_garbage);
+    double worst = 0;
+    for(Vertex v : garbage.vertices())
+      worst = (std::max)(worst, std::abs(ncc_garbage[v] * ncc_garbage[v] - ns_garbage[v] * ns_garbage[v]));
+    close(worst, "compute_normal_controlled_coordinates");
+
+    // N applied to the x coordinates, read back at each vertex's row.
+    const HD::Normal_controlled_coordinates<Mesh> ncc(garbage);
+    const Eigen::SparseMatrix<double> N = HD::normal_controlled_coordinates_matrix(garbage);
+    CHECK(std::size_t(N.rows()) == garbage.number_of_vertices());
+    Eigen::VectorXd x(N.cols());
+    for(Vertex v : garbage.vertices())
+      x[Eigen::Index(ncc.vertex_index(v))] = garbage.point(v).x();
+    const Eigen::VectorXd y = N * x;
+    const HD::Normal_controlled_coordinates<Mesh> ncc_clean(clean);
+    const Eigen::SparseMatrix<double> N_clean = HD::normal_controlled_coordinates_matrix(clean);
+    Eigen::VectorXd x_clean(N_clean.cols());
+    for(Vertex v : clean.vertices())
+      x_clean[Eigen::Index(ncc_clean.vertex_index(v))] = clean.point(v).x();
+    const Eigen::VectorXd y_clean = N_clean * x_clean;
+    std::map<Vertex, double> ny, ny_clean;
+    for(Vertex v : garbage.vertices())
+      ny[v] = y[Eigen::Index(ncc.vertex_index(v))];
+    for(Vertex v : clean.vertices())
+      ny_clean[v] = y_clean[Eigen::Index(ncc_clean.vertex_index(v))];
+    close(largest_difference(by_point(garbage, boost::make_assoc_property_map(ny)),
+                             by_point(clean, boost::make_assoc_property_map(ny_clean))),
+          "normal_controlled_coordinates_matrix");
+
+    // The heat kernel (spectral: its diagonal at t = 1) and the diffusion.
+    const Kernel kernel(garbage, HD::parameters::number_of_eigenpairs(20));
+    const Kernel kernel_clean(clean, HD::parameters::number_of_eigenpairs(20));
+    std::map<Vertex, double> k_garbage, k_clean;
+    for(Vertex v : garbage.vertices())
+      k_garbage[v] = kernel.heat_kernel_signature(v, 1.);
+    for(Vertex v : clean.vertices())
+      k_clean[v] = kernel_clean.heat_kernel_signature(v, 1.);
+    // the eigen solver converges to 1e-10 from a start that depends on the order
+    CHECK_MESSAGE(largest_difference(by_point(garbage, boost::make_assoc_property_map(k_garbage)),
+                                     by_point(clean, boost::make_assoc_property_map(k_clean))) <= 1e-6,
+                  "removed elements: Edge_weighted_heat_kernel differs after collect_garbage()");
+
+    auto out_garbage = garbage.add_property_map<Vertex, double>("v:out_test", 0.).first;
+    auto out_clean = clean.add_property_map<Vertex, double>("v:out_test", 0.).first;
+    HD::anisotropic_heat_diffusion(garbage, ns_garbage, out_garbage, HD::parameters::number_of_steps(3));
+    HD::anisotropic_heat_diffusion(clean, ns_clean, out_clean, HD::parameters::number_of_steps(3));
+    close(largest_difference(by_point(garbage, out_garbage), by_point(clean, out_clean)), "anisotropic_heat_diffusion", 1e-6);
+
+    // Features, without and with diffusion.
+    for(std::size_t k : {std::size_t(0), std::size_t(2)})
+    {
+      std::vector<Vertex> convex, concave, convex_clean, concave_clean;
+      HD::detect_multiscale_features(garbage, ns_garbage, std::back_inserter(convex), std::back_inserter(concave),
+                                     HD::parameters::number_of_steps(k));
+      HD::detect_multiscale_features(clean, ns_clean, std::back_inserter(convex_clean),
+                                     std::back_inserter(concave_clean), HD::parameters::number_of_steps(k));
+      CHECK_MESSAGE(!convex.empty() && points_of(garbage, convex) == points_of(clean, convex_clean) &&
+                        points_of(garbage, concave) == points_of(clean, concave_clean),
+                    "removed elements: detect_multiscale_features (k = " << k << ") differs after collect_garbage()");
+    }
+
+    // Decomposition, synthesis.
+    std::vector<decltype(out_garbage)> bands_garbage, bands_clean;
+    for(int j = 0; j < 2; ++j)
+    {
+      bands_garbage.push_back(garbage.add_property_map<Vertex, double>("v:band_test" + std::to_string(j), 0.).first);
+      bands_clean.push_back(clean.add_property_map<Vertex, double>("v:band_test" + std::to_string(j), 0.).first);
+    }
+    HD::decompose_field(garbage, ns_garbage, bands_garbage, out_garbage);
+    HD::decompose_field(clean, ns_clean, bands_clean, out_clean);
+    close(largest_difference(by_point(garbage, bands_garbage[1]), by_point(clean, bands_clean[1])), "decompose_field", 1e-6);
+    const std::vector<double> weights = {2., 1.};
+    HD::synthesize_field(garbage, bands_garbage, out_garbage, weights, out_garbage);
+    HD::synthesize_field(clean, bands_clean, out_clean, weights, out_clean);
+    close(largest_difference(by_point(garbage, out_garbage), by_point(clean, out_clean)), "synthesize_field", 1e-6);
+
+    // What moves the vertices: compared by where each vertex goes.
+    auto moved = [&](const std::string& what, auto&& edit) {
+      Mesh a = garbage, b = clean;
+      edit(a);
+      edit(b);
+      CHECK_MESSAGE(largest_difference(points_by_point(garbage, a), points_by_point(clean, b)) <= 1e-6,
+                    "removed elements: " << what << " differs after collect_garbage()");
+    };
+    moved("reconstruct_from_normal_signature", [&](Mesh& m) {
+      std::map<Vertex, double> ns;
+      const HD::Normal_controlled_coordinates<Mesh> own(m);
+      for(Vertex v : m.vertices())
+        ns[v] = 1.5 * own.normal_signature(v);
+      HD::reconstruct_from_normal_signature(m, boost::make_assoc_property_map(ns));
+    });
+    moved("filter_shape", [](Mesh& m) { HD::filter_shape(m, std::vector<double>{1., 2.}); });
+    moved("denoise_mesh", [](Mesh& m) { HD::denoise_mesh(m); });
+  }
+  catch(const std::exception& e)
+  {
+    CHECK_MESSAGE(false, "removed elements: unexpected exception: " << e.what());
+  }
+
+  // The user's numbering is honoured (here the reverse of vertices(garbage)); one with
+  // the gaps of the removed vertex is rejected, and says why.
+  {
+    std::map<Vertex, std::size_t> reverse;
+    std::size_t k = garbage.number_of_vertices();
+    for(Vertex v : garbage.vertices())
+      reverse[v] = --k;
+    const HD::Normal_controlled_coordinates<Mesh> ncc(
+        garbage, CGAL::parameters::vertex_index_map(boost::make_assoc_property_map(reverse)));
+    bool honoured = true;
+    for(Vertex v : garbage.vertices())
+      honoured = honoured && ncc.vertex_index(v) == reverse[v];
+    CHECK_MESSAGE(honoured, "removed elements: the user's vertex_index_map is not honoured");
+    CHECK_THROWS(HD::Normal_controlled_coordinates<Mesh>(
+                     garbage, CGAL::parameters::vertex_index_map(get(CGAL::vertex_index, garbage))),
+                 std::invalid_argument, "collect_garbage()");
+  }
+
+  // Polyhedron_3 with vertex ids numbered before the removal: the ids have a gap.
+  {
+    typedef CGAL::Polyhedron_3<K, CGAL::Polyhedron_items_with_id_3> Polyhedron;
+    Polyhedron polyhedron = test_support::load<Polyhedron>("elephant.off");
+    std::size_t id = 0;
+    for(auto v : vertices(polyhedron))
+      v->id() = id++;
+    remove_a_vertex(polyhedron, removed);
+    std::map<Polyhedron::Vertex_handle, double> ns, out;
+    try
+    {
+      HD::compute_normal_signature(polyhedron, boost::make_assoc_property_map(ns));
+      auto ns_clean = clean.property_map<Vertex, double>("v:ns_test").first;
+      close(largest_difference(by_point(polyhedron, boost::make_assoc_property_map(ns)), by_point(clean, ns_clean)),
+            "compute_normal_signature on a Polyhedron_3");
+      HD::anisotropic_heat_diffusion(polyhedron, boost::make_assoc_property_map(ns),
+                                     boost::make_assoc_property_map(out), HD::parameters::number_of_steps(3));
+      auto out_clean = clean.add_property_map<Vertex, double>("v:out_polyhedron", 0.).first;
+      HD::anisotropic_heat_diffusion(clean, ns_clean, out_clean, HD::parameters::number_of_steps(3));
+      close(largest_difference(by_point(polyhedron, boost::make_assoc_property_map(out)), by_point(clean, out_clean)),
+            "anisotropic_heat_diffusion on a Polyhedron_3", 1e-6);
+    }
+    catch(const std::exception& e)
+    {
+      CHECK_MESSAGE(false, "removed elements, Polyhedron_3: unexpected exception: " << e.what());
+    }
+  }
+}
+
 int main()
 {
   try
@@ -569,6 +824,7 @@ int main()
     check_built_meshes();
     check_parameters();
     check_iterative_solver_on_components();
+    check_removed_elements();
   }
   catch(const std::exception& e)
   {

@@ -294,6 +294,33 @@ void check_kernels_and_structures()
     // the last pack wins
     const auto np3 = HD::parameters::combine(HD::parameters::sigma(0.1), HD::parameters::sigma(0.5));
     CHECK(HD::parameters::choose_parameter(HD::parameters::get_parameter(np3, HD::internal_np::sigma), 1.) == 0.5);
+
+    // Chains, CGAL style: the package's parameters after each other, and mixed with
+    // CGAL's in any order once the chain starts in HD::parameters. The packs still go
+    // to PMP, with the overloads a CGAL pack selects (PMP::area of a mesh and of a
+    // face range).
+    using HD::parameters::choose_parameter;
+    using HD::parameters::get_parameter;
+    const auto chain1 = HD::parameters::sigma(0.1).time(2.);
+    const auto chain2 = HD::parameters::vertex_normal_map(normal_map).sigma(0.1).vertex_point_map(vpm).time(2.);
+    const auto chain3 = HD::parameters::sigma(0.1).vertex_point_map(vpm).number_of_steps(3).geom_traits(Epick());
+    CHECK(choose_parameter(get_parameter(chain1, HD::internal_np::sigma), 1.) == 0.1);
+    CHECK(choose_parameter(get_parameter(chain1, HD::internal_np::time), 1.) == 2.);
+    CHECK(choose_parameter(get_parameter(chain2, HD::internal_np::sigma), 1.) == 0.1);
+    CHECK(choose_parameter(get_parameter(chain2, HD::internal_np::time), 1.) == 2.);
+    CHECK(choose_parameter(get_parameter(chain3, HD::internal_np::number_of_steps), 0) == 3);
+    CHECK((!HD::parameters::is_default_parameter<decltype(chain2), CGAL::internal_np::vertex_normal_map_t>::value));
+    const HD::Normal_controlled_coordinates<Mesh> chained(elephant, chain2);
+    double chained_worst = 0;
+    for(Vertex v : elephant.vertices())
+      chained_worst = (std::max)(chained_worst, std::abs(chained.normal_signature(v) - ncc.normal_signature(v)));
+    CHECK_MESSAGE(chained_worst <= 1e-14, "a chained pack changes NS by " << chained_worst);
+    const double area = PMP::area(elephant);
+    CHECK(PMP::area(elephant, chain2) == area && PMP::area(elephant, chain3) == area &&
+          PMP::area(faces(elephant), elephant, chain3) == area);
+    const auto combined = HD::parameters::combine(CGAL::parameters::vertex_point_map(vpm), chain1);
+    CHECK(choose_parameter(get_parameter(combined, HD::internal_np::time), 1.) == 2.);
+    CHECK(PMP::area(elephant, combined) == area);
   }
 }
 

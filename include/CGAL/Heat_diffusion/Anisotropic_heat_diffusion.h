@@ -106,7 +106,9 @@ template <typename TriangleMesh,
 class Anisotropic_heat_diffusion
 {
 public:
+  /// The vertex type of `TriangleMesh`.
   typedef typename boost::graph_traits<TriangleMesh>::vertex_descriptor vertex_descriptor;
+  /// The spectral heat kernel, when the diffusion uses one (see `heat_kernel()`).
   typedef Edge_weighted_heat_kernel<TriangleMesh, GeomTraits> Heat_kernel;
   /// The NCC the operators are built from.
   typedef Normal_controlled_coordinates<TriangleMesh, GeomTraits> NCC;

@@ -92,8 +92,15 @@ template <typename TriangleMesh,
 class Edge_weighted_heat_kernel
 {
 public:
+  /// The vertex type of `TriangleMesh`.
   typedef typename boost::graph_traits<TriangleMesh>::vertex_descriptor vertex_descriptor;
+  /// The Normal-Controlled Coordinates the kernel is built from.
   typedef Normal_controlled_coordinates<TriangleMesh, GeomTraits> NCC;
+
+  /// Meshes larger than this use a coarse level by default.
+  static constexpr std::size_t automatic_coarse_threshold = 100000;
+  /// The coarse vertex count chosen by default for such meshes.
+  static constexpr std::size_t automatic_coarse_vertex_count = 20000;
 
   /// Computes the NCC, \f$ L \f$, \f$ B \f$ and the eigenpairs.
   ///
@@ -135,11 +142,6 @@ public:
   ///
   /// Complexity: one sparse Cholesky factorisation and a Lanczos iteration of
   /// \f$ O(n m^2) \f$ dense work.
-  /// Meshes larger than this use a coarse level by default.
-  static constexpr std::size_t automatic_coarse_threshold = 100000;
-  /// The coarse vertex count chosen by default for such meshes.
-  static constexpr std::size_t automatic_coarse_vertex_count = 20000;
-
   template <typename NamedParameters = parameters::Default_named_parameters>
   explicit Edge_weighted_heat_kernel(const TriangleMesh& tm,
                                      const NamedParameters& np = parameters::default_values())

@@ -43,36 +43,7 @@ enum class Denoising_method
   signature_diffusion
 };
 
-/// \cond SKIP_IN_MANUAL
-namespace internal_np {
-enum denoising_method_t { denoising_method };
-enum normal_sigma_t { normal_sigma };
-enum displacement_limit_t { displacement_limit };
-} // namespace internal_np
-/// \endcond
-
-namespace parameters {
-/// The algorithm of `denoise_mesh()`, a `Denoising_method`.
-template <typename T>
-CGAL::Named_function_parameters<T, internal_np::denoising_method_t> denoising_method(const T& value)
-{
-  return CGAL::Named_function_parameters<T, internal_np::denoising_method_t>(value);
-}
-/// The width \f$ \sigma_n \f$ of the normal weights \f$ \exp(-|n_f - n_g|^2 / 2\sigma_n^2) \f$ of
-/// `denoise_mesh()` (`Denoising_method::normal_filtering`).
-template <typename T>
-CGAL::Named_function_parameters<T, internal_np::normal_sigma_t> normal_sigma(const T& value)
-{
-  return CGAL::Named_function_parameters<T, internal_np::normal_sigma_t>(value);
-}
-/// The bound on the root mean square displacement of `denoise_mesh()`
-/// (`Denoising_method::normal_filtering`), in multiples of the estimated noise level.
-template <typename T>
-CGAL::Named_function_parameters<T, internal_np::displacement_limit_t> displacement_limit(const T& value)
-{
-  return CGAL::Named_function_parameters<T, internal_np::displacement_limit_t>(value);
-}
-} // namespace parameters
+// The named parameters denoising_method, normal_sigma and displacement_limit are in parameters.h.
 
 /// \cond SKIP_IN_MANUAL
 namespace internal {
@@ -402,7 +373,7 @@ inline void fit_vertices_to_normals(const Indexed_mesh& mesh, const Face_adjacen
 ///     \cgalParamDefault{`Area_weighted_vertex_normals()`}
 ///   \cgalParamNEnd
 ///   \cgalParamNBegin{vertex_index_map}
-///     \cgalParamDescription{a property map associating to each vertex of `tm` a unique index in `[0, num_vertices(tm))`}
+///     \cgalParamDescription{a property map associating to each vertex of `tm` a unique index in `[0, n)`, `n` the number of vertices in `vertices(tm)` (removed vertices of a `Surface_mesh` are not counted)}
 ///     \cgalParamType{a model of `ReadablePropertyMap` with `vertex_descriptor` as key and `std::size_t` as value type}
 ///     \cgalParamDefault{an automatically indexed internal map}
 ///   \cgalParamNEnd
@@ -459,8 +430,8 @@ void denoise_mesh(TriangleMesh& tm, const NamedParameters& np = parameters::defa
       choose_parameter(get_parameter(np, internal_np::kernel_method), Heat_kernel_method::automatic), false);
   const Operator_normalization normalization =
       choose_parameter(get_parameter(np, internal_np::operator_normalization), Operator_normalization::balanced);
-  // -1: the automatic choice of Edge_weighted_heat_kernel.
-  const double coarse_vertex_count = double(choose_parameter(get_parameter(np, internal_np::coarse_vertex_count), -1));
+  // -1: the automatic choice of Edge_weighted_heat_kernel; passed on as given (an integer).
+  const auto coarse_vertex_count = choose_parameter(get_parameter(np, internal_np::coarse_vertex_count), -1);
   const double user_normal_sigma = choose_parameter(get_parameter(np, internal_np::normal_sigma), 0.);
   const bool automatic_normal_sigma = parameters::is_default_parameter<NamedParameters, internal_np::normal_sigma_t>::value;
   const double displacement_limit = choose_parameter(get_parameter(np, internal_np::displacement_limit), 1.1);
@@ -482,12 +453,14 @@ void denoise_mesh(TriangleMesh& tm, const NamedParameters& np = parameters::defa
     internal::throw_invalid_input("denoise_mesh: normal_sigma must be positive and finite");
   if(!(displacement_limit > 0))
     internal::throw_invalid_input("denoise_mesh: displacement_limit must be positive");
-  if(num_vertices(tm) == 0 || iterations < 1)
+  if(internal::number_of_listed_vertices(tm) == 0 || iterations < 1)
     return;
 
   auto vpm = choose_parameter(get_parameter(np, CGAL::internal_np::vertex_point),
                               get_property_map(CGAL::vertex_point, tm));
-  const auto vim = CGAL::get_initialized_vertex_index_map(tm, np);
+  // The user's numbering or the rank in vertices(tm), without gaps where a
+  // Surface_mesh has removed vertices.
+  const auto vim = internal::vertex_numbering(tm, np);
   const GeomTraits gt = choose_parameter<GeomTraits>(get_parameter(np, CGAL::internal_np::geom_traits));
   const Rule rule = choose_parameter<Rule>(get_parameter(np, internal_np::vertex_normal_rule));
   const auto mesh_parameters =

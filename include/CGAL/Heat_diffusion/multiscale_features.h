@@ -261,7 +261,7 @@ detect_multiscale_features(const Anisotropic_heat_diffusion<TriangleMesh, GeomTr
 ///   \cgalParamNEnd
 ///   \cgalParamNBegin{vertex_index_map}
 ///     \cgalParamDescription{a property map associating to each vertex of `tm` a unique
-///       index in `[0, num_vertices(tm))`; it sets the order of the outputs}
+///       index in `[0, n)`, `n` the number of vertices in `vertices(tm)` (removed vertices of a `Surface_mesh` are not counted); it sets the order of the outputs}
 ///     \cgalParamType{a model of `ReadablePropertyMap` with `vertex_descriptor` as key and `std::size_t` as value type}
 ///     \cgalParamDefault{an automatically indexed internal map}
 ///   \cgalParamNEnd
@@ -300,8 +300,10 @@ detect_multiscale_features(const TriangleMesh& tm, const VertexFieldMap& field, 
 
   const double c = internal::checked_feature_threshold(
       parameters::choose_parameter(parameters::get_parameter(np, internal_np::feature_threshold), 0.8), function);
-  const auto vim = CGAL::get_initialized_vertex_index_map(tm, np);
-  const std::size_t n = std::size_t(num_vertices(tm));
+  // The user's numbering or the rank in vertices(tm), without gaps where a
+  // Surface_mesh has removed vertices.
+  const auto vim = internal::vertex_numbering(tm, np);
+  const std::size_t n = internal::number_of_listed_vertices(tm);
   std::vector<vertex_descriptor> vertex_of_index(n);
   Eigen::VectorXd f0(static_cast<Eigen::Index>(n));
   for(vertex_descriptor v : vertices(tm))

@@ -63,8 +63,11 @@ template <typename TriangleMesh,
 class Normal_controlled_coordinates
 {
 public:
+  /// The vertex type of `TriangleMesh`.
   typedef typename boost::graph_traits<TriangleMesh>::vertex_descriptor vertex_descriptor;
+  /// The vector type of the NCC and the normals.
   typedef typename GeomTraits::Vector_3 Vector_3;
+  /// The number type of `GeomTraits`.
   typedef typename GeomTraits::FT FT;
   /// The sparse matrix type of the NCC operator.
   typedef Eigen::SparseMatrix<double> Sparse_matrix;
@@ -78,10 +81,10 @@ public:
   ///     \cgalParamDefault{`boost::get(CGAL::vertex_point, tm)`}
   ///   \cgalParamNEnd
   ///   \cgalParamNBegin{vertex_index_map}
-  ///     \cgalParamDescription{a property map associating to each vertex of `tm` a unique index in `[0, num_vertices(tm))`, the row of the vertex in `operator_matrix()`}
+  ///     \cgalParamDescription{a property map associating to each vertex of `tm` a unique index in `[0, n)`, `n` the number of vertices in `vertices(tm)` (removed vertices of a `Surface_mesh` are not counted), the row of the vertex in `operator_matrix()`}
   ///     \cgalParamExtra{without it, meshes of at least 100000 vertices are numbered along a Hilbert curve (see `vertex_index()`)}
   ///     \cgalParamType{a model of `ReadablePropertyMap` with `vertex_descriptor` as key and `std::size_t` as value type}
-  ///     \cgalParamDefault{an automatically indexed internal map}
+  ///     \cgalParamDefault{the rank of the vertex in `vertices(tm)`, so that a `Surface_mesh` with removed elements needs no `collect_garbage()`}
   ///   \cgalParamNEnd
   ///   \cgalParamNBegin{vertex_normal_map}
   ///     \cgalParamDescription{the vertex normals to measure the NCC against (they are normalised)}
@@ -114,12 +117,11 @@ public:
     using parameters::get_parameter;
     const auto vpm = choose_parameter(get_parameter(np, CGAL::internal_np::vertex_point),
                                       get_const_property_map(CGAL::vertex_point, tm));
-    const auto vim = CGAL::get_initialized_vertex_index_map(tm, np);
     const GeomTraits gt = choose_parameter<GeomTraits>(get_parameter(np, CGAL::internal_np::geom_traits));
     // Large meshes are numbered along a Hilbert curve (memory order of the diffusion),
     // unless the user gave the numbering.
     if(parameters::is_default_parameter<NamedParameters, CGAL::internal_np::vertex_index_t>::value &&
-       static_cast<std::size_t>(num_vertices(tm)) >= internal::spatial_order_threshold &&
+       internal::number_of_listed_vertices(tm) >= internal::spatial_order_threshold &&
        internal::number_along_hilbert_curve(tm, vpm, index_))
     {
       try
@@ -130,20 +132,22 @@ public:
       }
       catch(const std::invalid_argument&)
       {
-        // again below, so that the message numbers the vertices as the mesh does
+        // again below, so that the message numbers the vertices as the mesh lists them
       }
     }
-    for(vertex_descriptor v : vertices(tm))
-      put(index_, v, static_cast<std::size_t>(get(vim, v)));
-    mesh_ = internal::make_indexed_mesh(tm, vpm, vim);
-    data_ = internal::compute_ncc_data(mesh_, internal::vertex_normals(mesh_, tm, vpm, vim, gt, np));
+    // The user's numbering, or the order of vertices(tm) (not the mesh's own index
+    // map, which has gaps where a Surface_mesh has removed vertices).
+    internal::number_vertices(tm, np, index_);
+    mesh_ = internal::make_indexed_mesh(tm, vpm, index_);
+    data_ = internal::compute_ncc_data(mesh_, internal::vertex_normals(mesh_, tm, vpm, index_, gt, np));
   }
 
   /// The row of `v` in `operator_matrix()`: its index in the vertex index map if one
   /// was given; otherwise, for meshes of at least 100000 vertices, its rank along a
   /// Hilbert curve of the vertices (the memory-bound sparse products of the diffusion
   /// then read nearly sequentially: one step was 4.6 times faster on a 1.6M-vertex
-  /// subdivided mesh), and its index in the mesh's own vertex index map for smaller meshes.
+  /// subdivided mesh), and its rank in `vertices(tm)` for smaller meshes (the mesh's
+  /// own index when it has no removed elements).
   std::size_t vertex_index(vertex_descriptor v) const { return get(index_, v); }
 
   /// The NCC \f$ \delta'_v = s_v n_v \f$ of `v` (dimensionless).

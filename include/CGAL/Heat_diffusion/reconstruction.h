@@ -64,7 +64,7 @@ namespace Heat_diffusion {
 ///     \cgalParamDefault{`Area_weighted_vertex_normals()`}
 ///   \cgalParamNEnd
 ///   \cgalParamNBegin{vertex_index_map}
-///     \cgalParamDescription{a property map associating to each vertex of `tm` a unique index in `[0, num_vertices(tm))`}
+///     \cgalParamDescription{a property map associating to each vertex of `tm` a unique index in `[0, n)`, `n` the number of vertices in `vertices(tm)` (removed vertices of a `Surface_mesh` are not counted)}
 ///     \cgalParamType{a model of `ReadablePropertyMap` with `vertex_descriptor` as key and `std::size_t` as value type}
 ///     \cgalParamDefault{an automatically indexed internal map}
 ///   \cgalParamNEnd
@@ -101,7 +101,9 @@ void reconstruct_from_normal_signature(TriangleMesh& tm, const VertexNSMap& ns_m
 
   auto vpm = choose_parameter(get_parameter(np, CGAL::internal_np::vertex_point),
                               get_property_map(CGAL::vertex_point, tm));
-  const auto vim = CGAL::get_initialized_vertex_index_map(tm, np);
+  // The user's numbering or the rank in vertices(tm), without gaps where a
+  // Surface_mesh has removed vertices.
+  const auto vim = internal::vertex_numbering(tm, np);
   const GeomTraits gt = choose_parameter<GeomTraits>(get_parameter(np, CGAL::internal_np::geom_traits));
   const Rule rule = choose_parameter<Rule>(get_parameter(np, internal_np::vertex_normal_rule));
 

@@ -254,9 +254,9 @@ def test_arguments_of_the_wrong_type():
         (lambda: hd.synthesize(np.zeros((1, 4)), np.zeros(4), None), "weights must be a sequence of numbers"),
         (lambda: hd.denoise(V, F, number_of_iterations=1.5), "number_of_iterations must be a whole number"),
         (lambda: hd.denoise(V, F, normal_sigma="wide"), "normal_sigma must be a number or None"),
-        (lambda: hd.filter_shape(V, F, [1.0], steps_per_level="5"), "steps_per_level must be a number or None"),
+        (lambda: hd.filter_shape(V, F, [1.0], steps_per_level="5"), "steps_per_level must be a whole number or None"),
         (lambda: hd.filter_shape(V, F, [1.0], anchor_weight=[1.0]), "anchor_weight must be a number or None"),
-        (lambda: hd.decompose(V, F, steps_per_level=True), "steps_per_level must be a number or None"),
+        (lambda: hd.decompose(V, F, steps_per_level=True), "steps_per_level must be a whole number or None"),
     ]
     for function, message in cases:
         with pytest.raises(ValueError, match=message):

@@ -4,7 +4,9 @@
 #ifndef CGAL_HEAT_DIFFUSION_INTERNAL_INDEXED_MESH_H
 #define CGAL_HEAT_DIFFUSION_INTERNAL_INDEXED_MESH_H
 
+#include <CGAL/Dynamic_property_map.h>
 #include <CGAL/Exact_predicates_inexact_constructions_kernel.h>
+#include <CGAL/Named_function_parameters.h>
 #include <CGAL/Spatial_sort_traits_adapter_3.h>
 #include <CGAL/boost/graph/helpers.h>
 #include <CGAL/boost/graph/iterator.h>
@@ -25,6 +27,7 @@
 #include <sstream>
 #include <stdexcept>
 #include <string>
+#include <type_traits>
 #include <vector>
 
 namespace CGAL {
@@ -73,6 +76,70 @@ struct Indexed_mesh
   }
 };
 
+// The number of vertices that `vertices(tm)` lists. `num_vertices()` of a
+// Surface_mesh counts its removed vertices too, until `collect_garbage()`: it is an
+// upper bound on the indices, not the number of vertices.
+template <typename TriangleMesh>
+std::size_t number_of_listed_vertices(const TriangleMesh& tm)
+{
+  std::size_t n = 0;
+  for(auto v : vertices(tm))
+  {
+    static_cast<void>(v);
+    ++n;
+  }
+  return n;
+}
+
+// Writes to `index` the number of every vertex of `tm` in [0, n), n the number of
+// vertices `vertices(tm)` lists, and returns n: the user's `vertex_index_map` if `np`
+// has one (it must be a bijection onto [0, n)), else the rank of the vertex in
+// `vertices(tm)`. The mesh's own index map is not used: that of a Surface_mesh with
+// removed elements has gaps, and that of a Polyhedron_3 may not be initialised.
+template <typename TriangleMesh, typename NamedParameters, typename VertexIndexMap>
+std::size_t number_vertices(const TriangleMesh& tm, const NamedParameters& np, VertexIndexMap index)
+{
+  const std::size_t n = number_of_listed_vertices(tm);
+  if constexpr(CGAL::parameters::is_default_parameter<NamedParameters, CGAL::internal_np::vertex_index_t>::value)
+  {
+    std::size_t k = 0;
+    for(auto v : vertices(tm))
+      put(index, v, k++);
+  }
+  else
+  {
+    const auto user_index = CGAL::parameters::get_parameter(np, CGAL::internal_np::vertex_index);
+    std::vector<unsigned char> seen(n, 0);
+    for(auto v : vertices(tm))
+    {
+      const auto i = get(user_index, v);
+      bool negative = false;
+      if constexpr(std::is_signed<std::decay_t<decltype(i)> >::value)
+        negative = i < 0;
+      if(negative || static_cast<std::size_t>(i) >= n || seen[static_cast<std::size_t>(i)])
+      {
+        std::ostringstream os;
+        os << "the vertex_index_map is not a bijection onto [0, " << n << "), " << n
+           << " the number of vertices (without removed ones; a Surface_mesh's own index map has gaps"
+           << " until collect_garbage())";
+        throw_invalid_input(os.str());
+      }
+      seen[static_cast<std::size_t>(i)] = 1;
+      put(index, v, static_cast<std::size_t>(i));
+    }
+  }
+  return n;
+}
+
+// The numbering of number_vertices(), in a new property map.
+template <typename TriangleMesh, typename NamedParameters>
+auto vertex_numbering(const TriangleMesh& tm, const NamedParameters& np)
+{
+  auto index = get(CGAL::dynamic_vertex_property_t<std::size_t>(), tm);
+  number_vertices(tm, np, index);
+  return index;
+}
+
 // Meshes of at least this many vertices get vertex indices along a Hilbert curve
 // (unless the user gives a vertex index map).
 constexpr std::size_t spatial_order_threshold = 100000;
@@ -92,8 +159,8 @@ bool number_along_hilbert_curve(const TriangleMesh& tm, VertexPointMap vpm, Vert
   typedef typename boost::graph_traits<TriangleMesh>::vertex_descriptor vertex_descriptor;
   std::vector<vertex_descriptor> vertex_list;
   std::vector<K::Point_3> points;
-  vertex_list.reserve(static_cast<std::size_t>(num_vertices(tm)));
-  points.reserve(static_cast<std::size_t>(num_vertices(tm)));
+  vertex_list.reserve(number_of_listed_vertices(tm));
+  points.reserve(vertex_list.capacity());
   for(vertex_descriptor v : vertices(tm))
   {
     const auto& p = get(vpm, v);
@@ -117,7 +184,8 @@ bool number_along_hilbert_curve(const TriangleMesh& tm, VertexPointMap vpm, Vert
 // Builds the indexed copy of `tm`, and rejects what the package cannot process with
 // an exception that names the element and the problem: a non-triangle face, a
 // non-finite coordinate, a zero-area face, an isolated vertex, a non-manifold vertex.
-// Vertex numbers in messages and in the arrays are those of `vim`.
+// Vertex numbers in messages and in the arrays are those of `vim`, which must number
+// the vertices that `vertices(tm)` lists in [0, their number) (see number_vertices()).
 template <typename TriangleMesh, typename VertexPointMap, typename VertexIndexMap>
 Indexed_mesh make_indexed_mesh(const TriangleMesh& tm, VertexPointMap vpm, VertexIndexMap vim)
 {
@@ -125,7 +193,7 @@ Indexed_mesh make_indexed_mesh(const TriangleMesh& tm, VertexPointMap vpm, Verte
   typedef typename GT::halfedge_descriptor halfedge_descriptor;
 
   Indexed_mesh mesh;
-  const std::size_t n = static_cast<std::size_t>(num_vertices(tm));
+  const std::size_t n = number_of_listed_vertices(tm);
   mesh.points.resize(n);
   std::vector<unsigned char> seen(n, 0);
 
@@ -136,7 +204,7 @@ Indexed_mesh make_indexed_mesh(const TriangleMesh& tm, VertexPointMap vpm, Verte
   {
     const std::size_t i = static_cast<std::size_t>(get(vim, v));
     if(i >= n || seen[i])
-      throw_invalid_input("the vertex index map is not a bijection onto [0, num_vertices)");
+      throw_invalid_input("the vertex index map is not a bijection onto [0, number of vertices)");
     seen[i] = 1;
     const auto& p = get(vpm, v);
     const Eigen::Vector3d x(CGAL::to_double(p.x()), CGAL::to_double(p.y()), CGAL::to_double(p.z()));
@@ -181,7 +249,7 @@ Indexed_mesh make_indexed_mesh(const TriangleMesh& tm, VertexPointMap vpm, Verte
       p.setZero();
 
   // Triangles.
-  mesh.triangles.reserve(static_cast<std::size_t>(num_faces(tm)));
+  mesh.triangles.reserve(2 * n);  // a hint (num_faces() counts removed faces too)
   std::size_t face_number = 0;
   for(auto f : faces(tm))
   {
@@ -222,7 +290,7 @@ Indexed_mesh make_indexed_mesh(const TriangleMesh& tm, VertexPointMap vpm, Verte
 
   mesh.fan_begin.assign(n + 1, 0);
   mesh.fan_is_closed.assign(n, 1);
-  mesh.fan.reserve(static_cast<std::size_t>(num_halfedges(tm)));
+  mesh.fan.reserve(6 * n);  // a hint
   std::vector<halfedge_descriptor> cycle;
   for(auto v : vertices(tm))
   {
