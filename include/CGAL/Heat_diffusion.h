@@ -12,6 +12,7 @@
 #include <CGAL/Heat_diffusion/normal_controlled_coordinates.h>
 #include <CGAL/Heat_diffusion/reconstruction.h>
 #include <CGAL/Heat_diffusion/heat_kernel_method.h>
+#include <CGAL/Heat_diffusion/operator_normalization.h>
 #include <CGAL/Heat_diffusion/Edge_weighted_heat_kernel.h>
 #include <CGAL/Heat_diffusion/Anisotropic_heat_diffusion.h>
 #include <CGAL/Heat_diffusion/multiscale_features.h>
