@@ -29,7 +29,9 @@ struct Symmetric_balancing
   double residual = 0;         // max |(D K D 1)_i - 1| before the correction
 };
 
-// Symmetric Sinkhorn-Knopp iteration, damped: d_i <- d_i r_i^(-2/3), r = D K D 1.
+// Symmetric Sinkhorn-Knopp iteration, damped: d_i <- d_i r_i^(-2/3), r = D K D 1, from
+// `initial_scaling` (the undamped first step from d = 1 is d = (K 1)^(-1/2); a caller
+// that knows K 1 approximately saves that product).
 // Near the solution the error e of log d evolves as e <- ((1 - a) I - a P) e, with
 // P = D K D and a the exponent; P's spectrum lies in [-1, 1] and, for a heat kernel
 // (positive definite, large diagonal), mostly in [0, 1], where a = 2/3 contracts every
@@ -43,11 +45,12 @@ struct Symmetric_balancing
 // `scaled_row_sums(d, r)` writes r = D K D 1 (any parallel product); every other step
 // is elementwise and parallel, so the cost is that of the products.
 template <typename ScaledRowSums>
-Symmetric_balancing balance_symmetric_matrix(std::size_t n, const ScaledRowSums& scaled_row_sums, double tolerance,
-                                             std::size_t maximum_iterations)
+Symmetric_balancing balance_symmetric_matrix(Eigen::VectorXd initial_scaling, const ScaledRowSums& scaled_row_sums,
+                                             double tolerance, std::size_t maximum_iterations)
 {
+  const std::size_t n = std::size_t(initial_scaling.size());
   Symmetric_balancing result;
-  result.scaling = Eigen::VectorXd::Ones(Eigen::Index(n));
+  result.scaling = std::move(initial_scaling);
   Eigen::VectorXd& d = result.scaling;
   Eigen::VectorXd r(static_cast<Eigen::Index>(n));
   const double exponent = 2. / 3.;
@@ -70,10 +73,7 @@ Symmetric_balancing balance_symmetric_matrix(std::size_t n, const ScaledRowSums&
       throw std::runtime_error("CGAL::Heat_diffusion: the balancing of A_t did not converge in " +
                                std::to_string(maximum_iterations) + " iterations (residual " + std::to_string(worst) +
                                ")");
-    // (the first step, from d = 1, is the undamped one: d = (K 1)^(-1/2), the exact
-    // scaling of a matrix whose rows are all alike)
-    const double a = result.iterations == 1 ? 0.5 : exponent;
-    parallel_for(n, [&](std::size_t i) { d[Eigen::Index(i)] *= std::pow(r[Eigen::Index(i)], -a); });
+    parallel_for(n, [&](std::size_t i) { d[Eigen::Index(i)] *= std::pow(r[Eigen::Index(i)], -exponent); });
   }
   result.correction = Eigen::VectorXd::Ones(Eigen::Index(n)) - r;
   return result;
