@@ -28,10 +28,12 @@ typedef Mesh::Vertex_index Vertex;
 typedef HD::Edge_weighted_heat_kernel<Mesh> Kernel;
 typedef HD::Anisotropic_heat_diffusion<Mesh> Diffusion;
 
-Eigen::VectorXd normal_signature_field(const Kernel& kernel)
+// The NS by vertex index, of a kernel or a diffusion.
+template <typename KernelOrDiffusion>
+Eigen::VectorXd normal_signature_field(const KernelOrDiffusion& source)
 {
-  const auto& ncc = kernel.normal_controlled_coordinates();
-  Eigen::VectorXd f(Eigen::Index(kernel.number_of_vertices()));
+  const auto& ncc = source.normal_controlled_coordinates();
+  Eigen::VectorXd f(Eigen::Index(source.number_of_vertices()));
   for(Vertex v : vertices(ncc.mesh()))
     f[Eigen::Index(ncc.vertex_index(v))] = ncc.normal_signature(v);
   return f;
@@ -104,15 +106,6 @@ void check_diffusion(const Kernel& kernel, const std::string& name)
     CHECK(fields[2].maxCoeff() - fields[2].minCoeff() < fields[0].maxCoeff() - fields[0].minCoeff());
   test_support::check_diffusion_product(diffusion, f0, name);
   test_support::check_balanced_operator(diffusion, f0, name + " spectral");
-}
-
-Eigen::VectorXd normal_signature_field(const Diffusion& diffusion)
-{
-  const auto& ncc = diffusion.normal_controlled_coordinates();
-  Eigen::VectorXd f(Eigen::Index(diffusion.number_of_vertices()));
-  for(Vertex v : vertices(ncc.mesh()))
-    f[Eigen::Index(ncc.vertex_index(v))] = ncc.normal_signature(v);
-  return f;
 }
 
 // The default operator with the local kernel on CAD with creases, an organic mesh, an
@@ -233,8 +226,16 @@ void check_scale_invariance()
   std::cout << "fandisk, scale-invariant kernel: regions mean " << diffusion.region_statistics().mean_size
             << ", collapsed " << diffusion.region_statistics().collapsed_regions << ", capped "
             << diffusion.region_statistics().capped_regions << std::endl;
-  const Eigen::VectorXd column_sums = Eigen::RowVectorXd::Ones(6475) * diffusion.operator_matrix();
+  // a nearly flat kernel on capped regions: the balanced A_t's diagonal is small, and
+  // stays nonnegative after the correction of the balancing
+  const Eigen::SparseMatrix<double>& A = diffusion.operator_matrix();
+  const Eigen::VectorXd column_sums = Eigen::RowVectorXd::Ones(6475) * A;
+  const Eigen::VectorXd row_sums = A * Eigen::VectorXd::Ones(6475);
   CHECK((column_sums.array() - 1.).abs().maxCoeff() <= 1e-13);
+  CHECK((row_sums.array() - 1.).abs().maxCoeff() <= 1e-13);
+  CHECK_MESSAGE(A.coeffs().minCoeff() >= 0, "scale-invariant kernel: negative entry " << A.coeffs().minCoeff());
+  std::cout << "fandisk, scale-invariant kernel: smallest diagonal entry of A_t " << A.diagonal().minCoeff() << ", "
+            << diffusion.balancing_iterations() << " balancing iterations" << std::endl;
   CHECK_MESSAGE(diffusion.region_statistics().collapsed_regions == 0, "scale-invariant kernel regions collapse");
 }
 

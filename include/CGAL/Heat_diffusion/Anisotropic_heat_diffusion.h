@@ -74,7 +74,8 @@ struct Heat_region_statistics
 /// \f$ h_t(j, i) \f$ where \f$ i \in \Omega_j \f$ and \f$ h_t(i, j) \f$ where \f$ j \in \Omega_i \f$,
 /// each 0 where its region does not hold it), \f$ D \f$ the positive diagonal that balances
 /// it (symmetric Sinkhorn-Knopp iteration, to \f$ |(DKD\mathbf{1})_i - 1| \le 10^{-4} \f$)
-/// and \f$ c \f$ the remainder \f$ 1 - (DKD\mathbf{1})_i \f$ on the diagonal, so that every row
+/// and \f$ c \f$ the remainder \f$ 1 - (DKD\mathbf{1})_i \f$ on the diagonal (the iteration goes on
+/// until the corrected diagonal is nonnegative), so that every row
 /// and every column sums to 1 to rounding. \f$ A_t \f$ is nonnegative, symmetric and doubly
 /// stochastic: the total heat \f$ \sum_i F^k(i) \f$ is conserved (paper, Fig. 5), a constant
 /// field stays constant, \f$ \min F^0 \le F^k \le \max F^0 \f$, adding a constant commutes
@@ -376,14 +377,15 @@ private:
   // `column_sums` are those of the kernel values H (K = (H + H^T) / 2): the regions are
   // nearly symmetric, so they are nearly K's row sums, and S^(-1/2) is nearly the first,
   // undamped step of the iteration, without its product.
-  void balance(const Eigen::VectorXd& column_sums, const internal::Progress& progress)
+  // `peaks` are the diagonal of K.
+  void balance(const Eigen::VectorXd& column_sums, const Eigen::VectorXd& peaks, const internal::Progress& progress)
   {
     progress.report(0., "the balancing of A_t");
     const std::size_t n = number_of_vertices();
     const Eigen::VectorXd ones = Eigen::VectorXd::Ones(Eigen::Index(n)), none;
     Product_scratch scratch = make_product_scratch();
     internal::Symmetric_balancing balancing = internal::balance_symmetric_matrix(
-        column_sums.cwiseSqrt().cwiseInverse(),
+        column_sums.cwiseSqrt().cwiseInverse(), peaks,
         [&](const Eigen::VectorXd& d, Eigen::VectorXd& row_sums) {
           matrix_.multiply_symmetric_part(ones, row_sums, d, none, scratch.partial, scratch.gathered);
         },
@@ -582,7 +584,8 @@ private:
     });
     statistics_ = Heat_region_statistics();
     statistics_.min_size = n;
-    Eigen::VectorXd column_sums(balanced ? Eigen::Index(n) : 0);  // of the kernel values
+    // of the kernel values H, for the balancing; the peaks h_t(j, j) are K's diagonal
+    Eigen::VectorXd column_sums(balanced ? Eigen::Index(n) : 0), peaks(balanced ? Eigen::Index(n) : 0);
     std::size_t total = 0;
     progress.report(0., "the construction of the heat regions");
     std::size_t group = 0;  // the first group of the block
@@ -643,7 +646,10 @@ private:
           for(auto& entry : column)
             entry.second /= sum;
         if(balanced)
+        {
           column_sums[Eigen::Index(j)] = sum;
+          peaks[Eigen::Index(j)] = column.front().second;
+        }
       };
       internal::parallel_for_with_scratch(
           end_group - group, scratches,
@@ -671,7 +677,7 @@ private:
     statistics_.mean_size = double(total) / double(n);
     matrix_.finish();
     if(balanced)
-      balance(column_sums, whole_progress.part(0.95, 1.));
+      balance(column_sums, peaks, whole_progress.part(0.95, 1.));
   }
 
   // operator_matrix(), made on the first call (thread-safe), shared by copies.

@@ -195,12 +195,7 @@ public:
         }
       }, 1);
     }
-    parallel_for(n_, [&](std::size_t i) {
-      double sum = 0;
-      for(Index q = row_begin_[i]; q < row_begin_[i + 1]; ++q)
-        sum += partial[row_group_rows_[std::size_t(q)]];
-      y[Eigen::Index(i)] = sum;
-    });
+    parallel_for(n_, [&](std::size_t i) { y[Eigen::Index(i)] = sum_of_group_rows(i, partial); });
   }
 
   // y = D ((A + A^T) / 2) D x + diag(c) x, with D = diag(scaling) and c = `correction`
@@ -246,11 +241,8 @@ public:
     }
     const bool corrected = correction.size() > 0;
     parallel_for(n_, [&](std::size_t i) {
-      double sum = 0;
-      for(Index q = row_begin_[i]; q < row_begin_[i + 1]; ++q)
-        sum += partial[row_group_rows_[std::size_t(q)]];
       const Eigen::Index k = Eigen::Index(i);
-      y[k] = scaling[k] * (0.5 * (sum + y[k])) + (corrected ? correction[k] * x[k] : 0.);
+      y[k] = scaling[k] * (0.5 * (sum_of_group_rows(i, partial) + y[k])) + (corrected ? correction[k] * x[k] : 0.);
     });
   }
 
@@ -287,6 +279,15 @@ public:
   }
 
 private:
+  // Row i of A x: the sums of its group rows, in the order of the groups.
+  double sum_of_group_rows(std::size_t i, const Eigen::VectorXd& partial) const
+  {
+    double sum = 0;
+    for(Index q = row_begin_[i]; q < row_begin_[i + 1]; ++q)
+      sum += partial[row_group_rows_[std::size_t(q)]];
+    return sum;
+  }
+
   // Groups appended together. Group g has the columns [group_column_begin[g],
   // group_column_begin[g + 1]) and the group rows first_group_row + [group_row_begin[g],
   // group_row_begin[g + 1]) of the whole matrix; an entry's row is its group row, from

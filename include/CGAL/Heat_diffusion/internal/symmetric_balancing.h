@@ -37,16 +37,19 @@ struct Symmetric_balancing
 // (positive definite, large diagonal), mostly in [0, 1], where a = 2/3 contracts every
 // mode at least three times per iteration (a = 1/2, the undamped symmetric iteration,
 // only twice: its slow modes are the rough ones, mu near 0). The iteration stops at
-// max |r_i - 1| <= tolerance; the correction c = 1 - r then makes the row sums 1 to
-// rounding, and since A is symmetric its column sums too. A diagonal with K_ii > 0
+// max |r_i - 1| <= tolerance, and not before the correction c = 1 - r leaves the
+// diagonal d_i^2 K_ii + c_i nonnegative (a nearly flat kernel on large regions has a
+// small diagonal); c makes the row sums 1 to rounding, and since A is symmetric its
+// column sums too. A diagonal with K_ii > 0
 // always has a balancing (K has total support), so the loop converges; it throws
 // rather than loop on input that breaks that (a zero or non-finite row sum).
 //
 // `scaled_row_sums(d, r)` writes r = D K D 1 (any parallel product); every other step
 // is elementwise and parallel, so the cost is that of the products.
 template <typename ScaledRowSums>
-Symmetric_balancing balance_symmetric_matrix(Eigen::VectorXd initial_scaling, const ScaledRowSums& scaled_row_sums,
-                                             double tolerance, std::size_t maximum_iterations)
+Symmetric_balancing balance_symmetric_matrix(Eigen::VectorXd initial_scaling, const Eigen::VectorXd& diagonal,
+                                             const ScaledRowSums& scaled_row_sums, double tolerance,
+                                             std::size_t maximum_iterations)
 {
   const std::size_t n = std::size_t(initial_scaling.size());
   Symmetric_balancing result;
@@ -59,15 +62,17 @@ Symmetric_balancing balance_symmetric_matrix(Eigen::VectorXd initial_scaling, co
     scaled_row_sums(d, r);
     ++result.iterations;
     double worst = 0;
+    bool nonnegative = true;
     for(Eigen::Index i = 0; i < r.size(); ++i)
     {
       if(!(r[i] > 0) || !std::isfinite(r[i]))
         throw std::runtime_error("CGAL::Heat_diffusion: the balancing of A_t met a row with sum " +
                                  std::to_string(r[i]) + " at vertex " + std::to_string(i));
       worst = (std::max)(worst, std::abs(r[i] - 1.));
+      nonnegative = nonnegative && d[i] * d[i] * diagonal[i] + (1. - r[i]) >= 0;
     }
     result.residual = worst;
-    if(worst <= tolerance)
+    if(worst <= tolerance && nonnegative)
       break;
     if(result.iterations >= maximum_iterations)
       throw std::runtime_error("CGAL::Heat_diffusion: the balancing of A_t did not converge in " +
