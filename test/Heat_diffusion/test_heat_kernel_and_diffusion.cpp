@@ -116,8 +116,12 @@ void check_operator_normalizations()
   for(const char* name : {"fandisk.off", "armadillo.off", "mech-holes-shark.off", "blobby_3cc.off"})
   {
     const Mesh mesh = test_support::load<Mesh>(name);
+    // (both sigmas on the CAD and the organic mesh; the feature-preserving one elsewhere)
+    const bool both = std::string(name) == "fandisk.off" || std::string(name) == "armadillo.off";
     for(double sigma : {0.1, 1.})
     {
+      if(sigma == 1. && !both)
+        continue;
       const std::string label = std::string(name) + " sigma " + std::to_string(sigma) + " local";
       const auto np = HD::parameters::combine(HD::parameters::sigma(sigma),
                                               HD::parameters::kernel_method(HD::Heat_kernel_method::local));
