@@ -188,10 +188,13 @@ arm, arm_smooth = load("armadillo_enhance"), load("armadillo_smooth")
 if arm and has("armadillo_filters.png"):
     section("Shape filtering of armadillo (the paper's Fig. 10)", [("smoothed, input, enhanced", "armadillo_filters.png")],
             arm, "`enhance`")
-    add(f"Enhancement (1, 3, 3): NS variance {arm.get('ns_variance_after', NAN) / arm.get('ns_variance_before', NAN):.2f} "
-        f"times the input's; largest vertex displacement {arm.get('max_displacement_relative', NAN):.2%} of the "
-        "bounding-box diagonal." + (f" Smoothing (0, 0, 1): {arm_smooth.get('ns_variance_after', NAN) / "
-                                      f"arm_smooth.get('ns_variance_before', NAN):.2f} times." if arm_smooth else ""))
+    def ratio(summary):
+        return summary.get("ns_variance_after", NAN) / summary.get("ns_variance_before", NAN)
+    text = (f"Enhancement (1, 3, 3): NS variance {ratio(arm):.2f} times the input's; largest vertex displacement "
+            f"{arm.get('max_displacement_relative', NAN):.2%} of the bounding-box diagonal.")
+    if arm_smooth:
+        text += f" Smoothing (0, 0, 1): {ratio(arm_smooth):.2f} times."
+    add(text)
     add("")
 
 if timings:
