@@ -40,9 +40,9 @@ struct Symmetric_balancing
 // max |r_i - 1| <= tolerance, and not before the correction c = 1 - r leaves the
 // diagonal d_i^2 K_ii + c_i nonnegative (a nearly flat kernel on large regions has a
 // small diagonal); c makes the row sums 1 to rounding, and since A is symmetric its
-// column sums too. A diagonal with K_ii > 0
-// always has a balancing (K has total support), so the loop converges; it throws
-// rather than loop on input that breaks that (a zero or non-finite row sum).
+// column sums too. A matrix with a positive diagonal has total support, hence a
+// balancing, so the loop converges; it throws rather than loop on input that breaks
+// that (a zero or non-finite row sum).
 //
 // `scaled_row_sums(d, r)` writes r = D K D 1 (any parallel product); every other step
 // is elementwise and parallel, so the cost is that of the products.
