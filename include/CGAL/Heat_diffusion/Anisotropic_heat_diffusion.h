@@ -177,16 +177,17 @@ public:
     const double t = checked_time(choose_parameter(get_parameter(np, internal_np::time), 1.));
     const internal::Progress progress(
         choose_parameter(get_parameter(np, internal_np::progress_callback), std::function<bool(double)>()));
-    if(method_ == Heat_kernel_method::spectral)
-    {
-      // One progress bar: the kernel (eigen solve) takes most of it, the regions the rest.
-      owned_kernel_ = std::make_shared<Heat_kernel>(
-          tm, parameters::combine(np, parameters::progress_callback(progress.part(0., 0.8).as_callback())));
-      kernel_ = owned_kernel_.get();
-      ncc_ = &kernel_->normal_controlled_coordinates();
-      build_spectral(t, progress.part(0.8, 1.));
-      return;
-    }
+    if constexpr(internal::can_select_spectral_kernel<NamedParameters>)
+      if(method_ == Heat_kernel_method::spectral)
+      {
+        // One progress bar: the kernel (eigen solve) takes most of it, the regions the rest.
+        owned_kernel_ = std::make_shared<Heat_kernel>(
+            tm, parameters::combine(np, parameters::progress_callback(progress.part(0., 0.8).as_callback())));
+        kernel_ = owned_kernel_.get();
+        ncc_ = &kernel_->normal_controlled_coordinates();
+        build_spectral(t, progress.part(0.8, 1.));
+        return;
+      }
     if(method_ != Heat_kernel_method::local)
       internal::throw_invalid_input("Anisotropic_heat_diffusion: unknown kernel_method");
     if(choose_parameter(get_parameter(np, internal_np::scale_invariant_kernel), false))

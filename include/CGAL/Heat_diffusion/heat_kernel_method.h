@@ -60,6 +60,18 @@ Heat_kernel_method resolve_kernel_method(Heat_kernel_method requested, bool scal
   return eigenpairs_requested ? Heat_kernel_method::spectral : Heat_kernel_method::local;
 }
 
+// Whether named parameters of type `NamedParameters` can select the spectral kernel:
+// `kernel_method` is given (its value is known at run time only) or the eigenpairs are
+// asked for. When they cannot, the constructors that take them do not compile the
+// spectral path (the eigen solver and the coarse level): a program that uses only the
+// local kernel does not pay for it.
+template <typename NamedParameters>
+constexpr bool can_select_spectral_kernel =
+    !parameters::is_default_parameter<NamedParameters, internal_np::kernel_method_t>::value ||
+    !parameters::is_default_parameter<NamedParameters, internal_np::number_of_eigenpairs_t>::value ||
+    !parameters::is_default_parameter<NamedParameters, internal_np::coarse_vertex_count_t>::value ||
+    !parameters::is_default_parameter<NamedParameters, internal_np::scale_invariant_kernel_t>::value;
+
 } // namespace internal
 /// \endcond
 

@@ -217,13 +217,15 @@ struct Collapse_progress : CGAL::Surface_mesh_simplification::Edge_collapse_visi
 // Simplifies `fine` to about `target_vertices` vertices by Garland-Heckbert edge
 // collapse (plane quadrics), which keeps the sharp creases that the anisotropic
 // kernel is about, and builds the prolongation. Meshes of more than four times the
-// target first go down to four times the target by `decimate_by_rounds()`.
-inline Coarse_level make_coarse_level(const Indexed_mesh& fine, std::size_t target_vertices,
-                                      const Progress& progress = Progress())
+// target first go down to four times the target by `decimate_by_rounds()`. `K` is the
+// kernel of the simplified copy (a template parameter, so that the simplification is
+// compiled only where a coarse level is built).
+template <typename K = CGAL::Exact_predicates_inexact_constructions_kernel>
+Coarse_level make_coarse_level(const Indexed_mesh& fine, std::size_t target_vertices,
+                               const Progress& progress = Progress())
 {
-  typedef CGAL::Exact_predicates_inexact_constructions_kernel K;
-  typedef CGAL::Surface_mesh<K::Point_3> Mesh;
-  typedef Mesh::Vertex_index Vertex;
+  typedef CGAL::Surface_mesh<typename K::Point_3> Mesh;
+  typedef typename Mesh::Vertex_index Vertex;
   namespace SMS = CGAL::Surface_mesh_simplification;
   namespace PMP = CGAL::Polygon_mesh_processing;
 
@@ -235,7 +237,7 @@ inline Coarse_level make_coarse_level(const Indexed_mesh& fine, std::size_t targ
   std::vector<Vertex> ids;
   ids.reserve(fine.number_of_vertices());
   for(const Eigen::Vector3d& p : fine.points)
-    ids.push_back(mesh.add_vertex(K::Point_3(p.x(), p.y(), p.z())));
+    ids.push_back(mesh.add_vertex(typename K::Point_3(p.x(), p.y(), p.z())));
   for(const auto& t : fine.triangles)
     if(mesh.add_face(ids[t[0]], ids[t[1]], ids[t[2]]) == Mesh::null_face())
       throw_invalid_input("coarse level: the mesh cannot be copied for simplification");
@@ -273,7 +275,7 @@ inline Coarse_level make_coarse_level(const Indexed_mesh& fine, std::size_t targ
   std::vector<Eigen::Triplet<double> > entries(3 * fine.number_of_vertices());
   parallel_for(fine.number_of_vertices(), [&](std::size_t i) {
     const Eigen::Vector3d& p = fine.points[i];
-    const auto location = PMP::locate_with_AABB_tree(K::Point_3(p.x(), p.y(), p.z()), tree, mesh);
+    const auto location = PMP::locate_with_AABB_tree(typename K::Point_3(p.x(), p.y(), p.z()), tree, mesh);
     const auto h = halfedge(location.first, mesh);
     const Vertex corners[3] = {source(h, mesh), target(h, mesh), target(next(h, mesh), mesh)};
     // Clamp rounding noise so that rows are convex combinations summing to 1.
@@ -289,6 +291,11 @@ inline Coarse_level make_coarse_level(const Indexed_mesh& fine, std::size_t targ
   progress.report(1., "the prolongation of the coarse level");
   return level;
 }
+
+#ifdef CGAL_HEAT_DIFFUSION_EXTERN_TEMPLATES
+extern template Coarse_level make_coarse_level<CGAL::Exact_predicates_inexact_constructions_kernel>(
+    const Indexed_mesh&, std::size_t, const Progress&);
+#endif
 
 } // namespace internal
 } // namespace Heat_diffusion

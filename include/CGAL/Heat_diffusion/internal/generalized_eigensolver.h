@@ -71,7 +71,6 @@ public:
 
 namespace generalized_eigensolver_impl {
 
-using Sparse_matrix = Eigen::SparseMatrix<double, Eigen::ColMajor, int>;
 using Permutation = Eigen::PermutationMatrix<Eigen::Dynamic, Eigen::Dynamic, int>;
 
 inline std::string to_short_string(double x)
@@ -98,23 +97,24 @@ inline std::runtime_error not_positive_definite_error(double shift)
 
 // Eigen's CHOLMOD wrappers only expose full solves with K; the transformation needs the
 // triangular factor itself, which CholmodBase keeps as a protected member.
+template <typename SparseMatrix>
 class Cholmod_llt
-  : public Eigen::CholmodBase<Sparse_matrix, Eigen::Lower, Cholmod_llt>
+  : public Eigen::CholmodBase<SparseMatrix, Eigen::Lower, Cholmod_llt<SparseMatrix>>
 {
 public:
   explicit Cholmod_llt(bool supernodal)
   {
     // A non-positive-definite K is reported through info()/minor; keep CHOLMOD from
     // also printing its own warning on stdout.
-    m_cholmod.print = 0;
+    this->m_cholmod.print = 0;
     // Always LL^T (final_ll), never LDL^T, so that the factor is R itself.
-    m_cholmod.final_asis = supernodal ? 1 : 0;
-    m_cholmod.final_ll = 1;
-    m_cholmod.supernodal = supernodal ? CHOLMOD_SUPERNODAL : CHOLMOD_SIMPLICIAL;
+    this->m_cholmod.final_asis = supernodal ? 1 : 0;
+    this->m_cholmod.final_ll = 1;
+    this->m_cholmod.supernodal = supernodal ? CHOLMOD_SUPERNODAL : CHOLMOD_SIMPLICIAL;
   }
 
-  const cholmod_factor* factor() const { return m_cholmodFactor; }
-  cholmod_common* common() const { return &m_cholmod; }
+  const cholmod_factor* factor() const { return this->m_cholmodFactor; }
+  cholmod_common* common() const { return &this->m_cholmod; }
 };
 
 // Simplicial by default: the supernodal factorisation and solves go through BLAS, and
@@ -124,10 +124,11 @@ public:
 #define CGAL_HEAT_DIFFUSION_CHOLMOD_SUPERNODAL 0
 #endif
 
+template <typename SparseMatrix>
 class Shifted_cholesky
 {
 public:
-  Shifted_cholesky(const Sparse_matrix& K, double shift)
+  Shifted_cholesky(const SparseMatrix& K, double shift)
     : m_llt(CGAL_HEAT_DIFFUSION_CHOLMOD_SUPERNODAL != 0)
   {
     m_llt.compute(K);
@@ -182,7 +183,7 @@ private:
     std::memcpy(x, m_X->x, sizeof(double) * b.nzmax);
   }
 
-  Cholmod_llt m_llt;
+  Cholmod_llt<SparseMatrix> m_llt;
   Permutation m_P;
   mutable cholmod_dense* m_X = nullptr;
   mutable cholmod_dense* m_Y = nullptr;
@@ -191,10 +192,11 @@ private:
 
 #else // Eigen's SimplicialLDLT
 
+template <typename SparseMatrix>
 class Shifted_cholesky
 {
 public:
-  Shifted_cholesky(const Sparse_matrix& K, double shift)
+  Shifted_cholesky(const SparseMatrix& K, double shift)
   {
     m_ldlt.compute(K);
     if(m_ldlt.info() != Eigen::Success)
@@ -225,7 +227,7 @@ public:
   }
 
 private:
-  Eigen::SimplicialLDLT<Sparse_matrix, Eigen::Lower, Eigen::AMDOrdering<int>> m_ldlt;
+  Eigen::SimplicialLDLT<SparseMatrix, Eigen::Lower, Eigen::AMDOrdering<int>> m_ldlt;
   Eigen::VectorXd m_inv_sqrt_D;
 };
 
@@ -241,12 +243,13 @@ private:
 // (5-6 per step in generalized mode, ~18% of the run time); one B product per
 // application remains, for the same two triangular solves a K solve costs anyway.
 // Everything runs in the permuted numbering, so no permutation is applied per step.
+template <typename SparseMatrix>
 class Transformed_operator
 {
 public:
   using Scalar = double;
 
-  Transformed_operator(const Shifted_cholesky& factor, const Sparse_matrix& permuted_B,
+  Transformed_operator(const Shifted_cholesky<SparseMatrix>& factor, const SparseMatrix& permuted_B,
                        const std::function<void()>& on_application)
     : m_factor(factor), m_B(permuted_B), m_on_application(on_application),
       m_tmp(permuted_B.rows())
@@ -271,8 +274,8 @@ public:
   }
 
 private:
-  const Shifted_cholesky& m_factor;
-  const Sparse_matrix& m_B;
+  const Shifted_cholesky<SparseMatrix>& m_factor;
+  const SparseMatrix& m_B;
   const std::function<void()>& m_on_application;
   mutable Eigen::VectorXd m_tmp;
 };
@@ -304,7 +307,8 @@ inline Eigen::Index automatic_subspace_dimension(Eigen::Index m, Eigen::Index n)
 // 2 (k/n) * mean eigenvalue, and the mean eigenvalue trace(B^{-1} L)/n is approximated
 // by the mean of L_ii / B_ii (exact for a lumped mass). Only the order of magnitude
 // matters; the estimate is invariant under scaling of L, of B, and of the mesh.
-inline double automatic_shift(const Sparse_matrix& L, const Sparse_matrix& B)
+template <typename SparseMatrix>
+double automatic_shift(const SparseMatrix& L, const SparseMatrix& B)
 {
   const Eigen::Index n = L.rows();
   const Eigen::VectorXd L_diagonal = L.diagonal();
@@ -323,9 +327,8 @@ inline double automatic_shift(const Sparse_matrix& L, const Sparse_matrix& B)
 
 // Dense fallback for small problems or when m is a sizeable fraction of n, where the
 // Lanczos iteration gains nothing and Spectra requires m < ncv <= n anyway.
-inline Generalized_eigenpairs dense_generalized_eigenpairs(const Sparse_matrix& L,
-                                                           const Sparse_matrix& B,
-                                                           Eigen::Index m)
+template <typename SparseMatrix>
+Generalized_eigenpairs dense_generalized_eigenpairs(const SparseMatrix& L, const SparseMatrix& B, Eigen::Index m)
 {
   const Eigen::MatrixXd Ld = Eigen::MatrixXd(L);
   const Eigen::MatrixXd Bd = Eigen::MatrixXd(B);
@@ -355,9 +358,10 @@ inline Generalized_eigenpairs dense_generalized_eigenpairs(const Sparse_matrix& 
 // false aborts with Generalized_eigensolver_cancelled.
 // Throws std::runtime_error if K = L - sigma B is not positive definite or if Lanczos
 // does not converge, std::invalid_argument on inconsistent sizes.
-inline Generalized_eigenpairs
-compute_smallest_generalized_eigenpairs(const Eigen::SparseMatrix<double>& L,
-                                        const Eigen::SparseMatrix<double>& B,
+template <typename SparseMatrix>
+Generalized_eigenpairs
+compute_smallest_generalized_eigenpairs(const SparseMatrix& L,
+                                        const SparseMatrix& B,
                                         Eigen::Index m,
                                         const std::function<bool(double fraction_done)>& progress,
                                         const Generalized_eigensolver_options& options)
@@ -393,13 +397,13 @@ compute_smallest_generalized_eigenpairs(const Eigen::SparseMatrix<double>& L,
   if(!(shift < 0.))
     throw std::invalid_argument("Heat_diffusion: the eigensolver shift must be negative");
 
-  impl::Sparse_matrix K = L - shift * B;
+  SparseMatrix K = L - shift * B;
   K.makeCompressed();
-  const impl::Shifted_cholesky factor(K, shift);
+  const impl::Shifted_cholesky<SparseMatrix> factor(K, shift);
   report(0.05);
 
-  const impl::Permutation& P = factor.permutation();
-  impl::Sparse_matrix permuted_B;
+  const auto& P = factor.permutation();
+  SparseMatrix permuted_B;
   permuted_B = B.twistedBy(P);   // P B P^T
 
   const Index ncv = options.subspace_dimension > m
@@ -416,8 +420,8 @@ compute_smallest_generalized_eigenpairs(const Eigen::SparseMatrix<double>& L,
       report(0.05 + 0.85 * (1. - std::exp(-double(applications) / double(ncv))));
   };
 
-  impl::Transformed_operator op(factor, permuted_B, on_application);
-  Spectra::SymEigsSolver<impl::Transformed_operator> lanczos(op, m, ncv);
+  impl::Transformed_operator<SparseMatrix> op(factor, permuted_B, on_application);
+  Spectra::SymEigsSolver<impl::Transformed_operator<SparseMatrix>> lanczos(op, m, ncv);
   lanczos.init();
   // The nu = 1/(lambda - sigma) are all positive: the largest ones are the wanted ones.
   lanczos.compute(Spectra::SortRule::LargestAlge, options.max_restarts, options.tolerance,
@@ -449,7 +453,7 @@ compute_smallest_generalized_eigenpairs(const Eigen::SparseMatrix<double>& L,
   gram = inv_norms.asDiagonal() * gram * inv_norms.asDiagonal();
   const double orthonormality_error = (gram - Eigen::MatrixXd::Identity(m, m)).cwiseAbs().maxCoeff();
 
-  impl::Sparse_matrix permuted_L;
+  SparseMatrix permuted_L;
   permuted_L = L.twistedBy(P);
   Eigen::MatrixXd LPhi = permuted_L * Phi;
 
@@ -501,14 +505,24 @@ compute_smallest_generalized_eigenpairs(const Eigen::SparseMatrix<double>& L,
   return result;
 }
 
-inline Generalized_eigenpairs
-compute_smallest_generalized_eigenpairs(const Eigen::SparseMatrix<double>& L,
-                                        const Eigen::SparseMatrix<double>& B,
+template <typename SparseMatrix>
+Generalized_eigenpairs
+compute_smallest_generalized_eigenpairs(const SparseMatrix& L,
+                                        const SparseMatrix& B,
                                         Eigen::Index m,
                                         const std::function<bool(double fraction_done)>& progress = {})
 {
   return compute_smallest_generalized_eigenpairs(L, B, m, progress, Generalized_eigensolver_options());
 }
+
+#ifdef CGAL_HEAT_DIFFUSION_EXTERN_TEMPLATES
+extern template Generalized_eigenpairs compute_smallest_generalized_eigenpairs<Eigen::SparseMatrix<double>>(
+    const Eigen::SparseMatrix<double>&, const Eigen::SparseMatrix<double>&, Eigen::Index,
+    const std::function<bool(double)>&, const Generalized_eigensolver_options&);
+extern template Generalized_eigenpairs compute_smallest_generalized_eigenpairs<Eigen::SparseMatrix<double>>(
+    const Eigen::SparseMatrix<double>&, const Eigen::SparseMatrix<double>&, Eigen::Index,
+    const std::function<bool(double)>&);
+#endif
 
 } // namespace internal
 } // namespace Heat_diffusion
