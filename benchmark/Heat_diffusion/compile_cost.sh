@@ -1,8 +1,10 @@
 #!/usr/bin/env bash
 # Compile cost of the package: for each example and for a baseline translation unit
 # (read a mesh, PMP vertex normals: what any CGAL program pays), the wall-clock time,
-# the CPU time and the peak memory (maximum resident set size) of the compiler, with
-# the flags the project's build uses (its compile_commands.json).
+# the CPU time (and its ratio to the baseline's) and the peak memory (maximum resident
+# set size) of the compiler, with the flags the project's build uses (its
+# compile_commands.json); each example twice: header-only (CGAL::Heat_diffusion) and as
+# a program linked with CGAL::Heat_diffusion_compiled compiles it.
 #
 # Usage: benchmark/Heat_diffusion/compile_cost.sh [BUILD_DIR]   (default: build)
 # BUILD_DIR is configured with CMAKE_EXPORT_COMPILE_COMMANDS=ON if it has no
@@ -67,9 +69,15 @@ base = [os.path.join(work, "baseline.cpp") if a == source or a == os.path.relpat
 print("baseline (mesh I/O + PMP normals)\t%s\t%s" % (directory, shlex.join(base)))
 for name, directory, args, source in rows:
     print("%s\t%s\t%s" % (name, directory, shlex.join(args)))
+# The same, as a program linked with CGAL::Heat_diffusion_compiled compiles it: the
+# spectral path's instantiations are the library's (extern templates).
+for name, directory, args, source in rows:
+    extern = args[:1] + ["-DCGAL_HEAT_DIFFUSION_EXTERN_TEMPLATES"] + args[1:]
+    print("%s (compiled library)\t%s\t%s" % (name, directory, shlex.join(extern)))
 PY
 
-printf '%-36s %10s %10s %14s\n' "translation unit" "wall (s)" "CPU (s)" "peak RSS (MiB)"
+printf '%-50s %10s %10s %12s %14s\n' "translation unit" "wall (s)" "CPU (s)" "CPU/baseline" "peak RSS (MiB)"
+baseline_cpu=
 while IFS=$'\t' read -r name directory command; do
   if ! (cd "$directory" && eval /usr/bin/time -v -o "$work/time" "$command") 2> "$work/errors"; then
     echo "compile_cost.sh: $name does not compile:" >&2
@@ -80,5 +88,7 @@ while IFS=$'\t' read -r name directory command; do
          awk -F: '{ s = 0; for(i = 1; i <= NF; ++i) s = s * 60 + $i; printf "%.1f", s }')
   cpu=$(awk -F': ' '/User time|System time/ { s += $2 } END { printf "%.1f", s }' "$work/time")
   rss=$(awk -F': ' '/Maximum resident set size/ { printf "%.0f", $2 / 1024 }' "$work/time")
-  printf '%-36s %10s %10s %14s\n' "$name" "$wall" "$cpu" "$rss"
+  baseline_cpu=${baseline_cpu:-$cpu}
+  ratio=$(awk -v a="$cpu" -v b="$baseline_cpu" 'BEGIN { printf "%.2f", a / b }')
+  printf '%-50s %10s %10s %12s %14s\n' "$name" "$wall" "$cpu" "$ratio" "$rss"
 done < "$work/commands"

@@ -281,23 +281,33 @@ public:
   const Heat_region_statistics& region_statistics() const { return statistics_; }
 
   /// \f$ F^k = A_t^k F^0 \f$ for a field given by vertex index.
-  Eigen::VectorXd diffuse(const Eigen::VectorXd& field, std::size_t number_of_steps) const
+  ///
+  /// \cgalNamedParamsBegin
+  ///   \cgalParamNBegin{progress_callback}
+  ///     \cgalParamDescription{called on the calling thread after each step with the fraction
+  ///       of the steps done; returning `false` cancels the diffusion with a `std::runtime_error`}
+  ///     \cgalParamType{a callable `bool(double)`}
+  ///     \cgalParamDefault{none}
+  ///   \cgalParamNEnd
+  /// \cgalNamedParamsEnd
+  ///
+  /// \throws std::invalid_argument if the field has the wrong size or a value that is not finite.
+  template <typename NamedParameters = parameters::Default_named_parameters>
+  Eigen::VectorXd diffuse(const Eigen::VectorXd& field, std::size_t number_of_steps,
+                          const NamedParameters& np = parameters::default_values()) const
   {
-    check_field(field);
-    Eigen::VectorXd current = field, next(field.size());
-    Product_scratch scratch = make_product_scratch();
-    for(std::size_t k = 0; k < number_of_steps; ++k)
-    {
-      apply(current, next, scratch);
-      current.swap(next);
-    }
-    return current;
+    return diffuse(field, std::vector<std::size_t>(1, number_of_steps), np).front();
   }
 
-  /// The fields \f$ F^k \f$ for every k of `steps` (in any order), in one pass.
-  std::vector<Eigen::VectorXd> diffuse(const Eigen::VectorXd& field, const std::vector<std::size_t>& steps) const
+  /// The fields \f$ F^k \f$ for every k of `steps` (in any order), in one pass; named
+  /// parameters as above.
+  template <typename NamedParameters = parameters::Default_named_parameters>
+  std::vector<Eigen::VectorXd> diffuse(const Eigen::VectorXd& field, const std::vector<std::size_t>& steps,
+                                       const NamedParameters& np = parameters::default_values()) const
   {
     check_field(field);
+    const internal::Progress progress(parameters::choose_parameter(
+        parameters::get_parameter(np, internal_np::progress_callback), std::function<bool(double)>()));
     std::vector<Eigen::VectorXd> result(steps.size());
     const std::size_t last = steps.empty() ? 0 : *std::max_element(steps.begin(), steps.end());
     Eigen::VectorXd current = field, next(field.size());
@@ -311,22 +321,26 @@ public:
         break;
       apply(current, next, scratch);
       current.swap(next);
+      progress.report(double(k + 1) / double(last), "the diffusion");
     }
     return result;
   }
 
-  /// Diffuses the field `field_in` by `number_of_steps` steps and writes it to `field_out`.
+  /// Diffuses the field `field_in` by `number_of_steps` steps and writes it to `field_out`;
+  /// named parameters as above.
   /// @tparam InputFieldMap a model of `ReadablePropertyMap`, `vertex_descriptor` to a floating-point type
   /// @tparam OutputFieldMap a model of `WritablePropertyMap`, `vertex_descriptor` to a floating-point type
   /// \throws std::invalid_argument if a value of `field_in` is not finite.
-  template <typename InputFieldMap, typename OutputFieldMap>
-  void diffuse(InputFieldMap field_in, OutputFieldMap field_out, std::size_t number_of_steps) const
+  template <typename InputFieldMap, typename OutputFieldMap,
+            typename NamedParameters = parameters::Default_named_parameters>
+  void diffuse(InputFieldMap field_in, OutputFieldMap field_out, std::size_t number_of_steps,
+               const NamedParameters& np = parameters::default_values()) const
   {
     const TriangleMesh& tm = ncc_->mesh();
     Eigen::VectorXd field(static_cast<Eigen::Index>(number_of_vertices()));
     for(vertex_descriptor v : vertices(tm))
       field[Eigen::Index(vertex_index(v))] = CGAL::to_double(get(field_in, v));
-    const Eigen::VectorXd result = diffuse(field, number_of_steps);
+    const Eigen::VectorXd result = diffuse(field, number_of_steps, np);
     typedef typename boost::property_traits<OutputFieldMap>::value_type Value;
     for(vertex_descriptor v : vertices(tm))
       put(field_out, v, Value(result[Eigen::Index(vertex_index(v))]));
