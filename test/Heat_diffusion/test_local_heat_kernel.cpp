@@ -149,7 +149,7 @@ void check_rational_approximation_and_clusters()
             << double(order.size()) / double(begin.size() - 1) << std::endl;
 }
 
-// The heat region of v_j (NOTES 8): grown breadth first from v_j through the vertices
+// The heat region of v_j (eq. 15, as the user manual defines it): grown breadth first from v_j through the vertices
 // where the column is above tau(t).
 std::size_t region_size(const HD::internal::Indexed_mesh& mesh, std::size_t j, const Eigen::VectorXd& column, double t)
 {

@@ -9,9 +9,11 @@
 #include <CGAL/Heat_diffusion/Edge_weighted_heat_kernel.h>
 #include <CGAL/Heat_diffusion/heat_kernel_method.h>
 #include <CGAL/Heat_diffusion/internal/Column_group_matrix.h>
+#include <CGAL/Heat_diffusion/internal/errors.h>
 #include <CGAL/Heat_diffusion/internal/heat_operators.h>
+#include <CGAL/Heat_diffusion/internal/heat_regions.h>
+#include <CGAL/Heat_diffusion/internal/kernel_columns.h>
 #include <CGAL/Heat_diffusion/internal/local_heat_kernel.h>
-#include <CGAL/Heat_diffusion/internal/parallel_for.h>
 #include <CGAL/Heat_diffusion/internal/progress.h>
 #include <CGAL/Heat_diffusion/internal/symmetric_balancing.h>
 #include <CGAL/Heat_diffusion/normal_controlled_coordinates.h>
@@ -193,9 +195,8 @@ public:
     if(choose_parameter(get_parameter(np, internal_np::scale_invariant_kernel), false))
       internal::throw_invalid_input("Anisotropic_heat_diffusion: the scale-invariant kernel (eq. 14) needs the "
                                     "eigenvalues; use Heat_kernel_method::spectral");
-    const double sigma = choose_parameter(get_parameter(np, internal_np::sigma), 0.1);
-    if(!(sigma > 0) || std::isnan(sigma))
-      internal::throw_invalid_input("Anisotropic_heat_diffusion: sigma must be positive");
+    const double sigma =
+        internal::checked_sigma(choose_parameter(get_parameter(np, internal_np::sigma), 0.1), "Anisotropic_heat_diffusion");
     owned_ncc_ = std::make_shared<NCC>(tm, np);
     ncc_ = owned_ncc_.get();
     const internal::Indexed_mesh& mesh = ncc_->indexed_mesh();
@@ -438,92 +439,6 @@ private:
     return t;
   }
 
-  // h_t(j, i) = (beta) Psi_i . Psi_j with Psi = Phi exp(-rate t / 2), row-major, so that
-  // an evaluation reads two contiguous rows.
-  struct Spectral_columns
-  {
-    struct Workspace {};
-    Eigen::Matrix<double, Eigen::Dynamic, Eigen::Dynamic, Eigen::RowMajor> psi;
-    const Heat_kernel* kernel;
-    bool relative;
-
-    Workspace make_workspace() const { return Workspace(); }
-    void prepare(std::size_t, Workspace&) const {}
-    double operator()(std::size_t j, std::size_t i, Workspace&) const
-    {
-      const double dot = psi.row(Eigen::Index(i)).dot(psi.row(Eigen::Index(j)));
-      return relative ? kernel->beta(i, j) * dot : dot;
-    }
-  };
-
-  // The same kernel from the factors of a coarse level, eigenvectors = P C: then
-  // psi_i = sum_a P(i, a) psi^c_a with psi^c = C exp(-rate t / 2) (coarse x m), and
-  // h_t(j, i) = sum_a P(i, a) (psi^c_a . psi_j). The fine vertices of a region share a
-  // few coarse vertices, whose dot products with psi_j are computed once per source:
-  // no n x m copy of the eigenvectors, and far fewer m-long dot products.
-  struct Coarse_spectral_columns
-  {
-    struct Workspace
-    {
-      Eigen::VectorXd psi_j;
-      std::vector<double> dots;  // psi^c_a . psi_j, valid where stamp[a] == generation
-      std::vector<std::size_t> stamp;
-      std::size_t generation = 0;
-    };
-    Eigen::Matrix<double, Eigen::Dynamic, Eigen::Dynamic, Eigen::RowMajor> psi;  // coarse x m
-    const Eigen::SparseMatrix<double, Eigen::RowMajor>* prolongation;
-    const Heat_kernel* kernel;
-    bool relative;
-
-    Workspace make_workspace() const
-    {
-      Workspace w;
-      w.psi_j.resize(psi.cols());
-      w.dots.assign(std::size_t(psi.rows()), 0.);
-      w.stamp.assign(std::size_t(psi.rows()), 0);
-      return w;
-    }
-    void prepare(std::size_t j, Workspace& w) const
-    {
-      w.psi_j.setZero();
-      for(Eigen::SparseMatrix<double, Eigen::RowMajor>::InnerIterator it(*prolongation, Eigen::Index(j)); it; ++it)
-        w.psi_j.noalias() += it.value() * psi.row(it.index()).transpose();
-      ++w.generation;
-    }
-    // (computes the dot products of the coarse vertices of v_i on first use: hence the
-    // workspace is not const)
-    double operator()(std::size_t j, std::size_t i, Workspace& w) const
-    {
-      double dot = 0;
-      for(Eigen::SparseMatrix<double, Eigen::RowMajor>::InnerIterator it(*prolongation, Eigen::Index(i)); it; ++it)
-      {
-        const std::size_t a = std::size_t(it.index());
-        if(w.stamp[a] != w.generation)
-        {
-          w.dots[a] = psi.row(it.index()).dot(w.psi_j);
-          w.stamp[a] = w.generation;
-        }
-        dot += it.value() * w.dots[a];
-      }
-      return relative ? kernel->beta(i, j) * dot : dot;
-    }
-  };
-
-  // h_t(j, i) = h_t(i, j) from the column of v_j, computed on its patch by prepare().
-  struct Local_columns
-  {
-    typedef internal::Local_heat_kernel::Workspace Workspace;
-    static constexpr bool relative = false;  // the absolute threshold
-    const internal::Local_heat_kernel& kernel;
-
-    Workspace make_workspace() const { return kernel.make_workspace(); }
-    void prepare(std::size_t j, Workspace& w) const { kernel.compute_column(j, w); }
-    double operator()(std::size_t, std::size_t i, Workspace& w) const
-    {
-      return internal::Local_heat_kernel::value(w, i);
-    }
-  };
-
   void build_spectral(double t, const internal::Progress& progress)
   {
     time_ = t;
@@ -535,11 +450,13 @@ private:
         columns.psi.col(k) *= std::exp(-0.5 * kernel_->decay_rate(std::size_t(k)) * t);
       build_from_columns(columns, order, std::vector<std::size_t>(), progress);
     };
+    const bool relative = kernel_->is_scale_invariant();
+    const Eigen::VectorXd* mass_diagonal = relative ? &kernel_->mass_diagonal() : nullptr;
     if(kernel_->coarse_eigenvectors().size() > 0)
-      build(Coarse_spectral_columns{kernel_->coarse_eigenvectors(), &kernel_->coarse_prolongation(), kernel_,
-                                    kernel_->is_scale_invariant()});
+      build(internal::Coarse_spectral_columns{kernel_->coarse_eigenvectors(), &kernel_->coarse_prolongation(),
+                                              mass_diagonal, relative});
     else
-      build(Spectral_columns{kernel_->eigenvectors(), kernel_, kernel_->is_scale_invariant()});
+      build(internal::Spectral_columns{kernel_->eigenvectors(), mass_diagonal, relative});
   }
 
   void build_local(double t, const internal::Heat_operators& operators, const internal::Progress& progress)
@@ -548,151 +465,24 @@ private:
     const internal::Local_heat_kernel kernel(ncc_->indexed_mesh(), operators.stiffness, operators.mass, t);
     // Sources cluster after cluster: consecutive sources share their patch and its
     // factorisations.
-    build_from_columns(Local_columns{kernel}, kernel.source_order(), kernel.cluster_begin(), progress);
+    build_from_columns(internal::Local_columns{kernel}, kernel.source_order(), kernel.cluster_begin(), progress);
   }
 
-  // Grows the heat region of every source j and fills column j of A_t. `columns`
-  // evaluates h_t(j, i) once prepare(j) has run; `order` is the order of the sources
-  // (results do not depend on it: each source writes its own column). `group_begin`, if
-  // not empty, is where groups of sources that share work start in `order`, with the end
-  // as last entry (the local kernel's clusters); else the groups are runs of
-  // `spectral_group_size` sources. A thread takes a group whole, and A_t keeps the
-  // columns group by group (`internal::Column_group_matrix`). `progress` is told after
-  // each block of sources.
+  // The heat regions and the kernel values on them (internal::build_heat_regions()),
+  // then, balanced, their balancing.
   template <typename Columns>
-  void build_from_columns(const Columns& kernel, const std::vector<std::size_t>& order,
-                          std::vector<std::size_t> group_begin, const internal::Progress& whole_progress)
+  void build_from_columns(const Columns& columns, const std::vector<std::size_t>& order,
+                          const std::vector<std::size_t>& group_begin, const internal::Progress& progress)
   {
     const bool balanced = normalization_ == Operator_normalization::balanced;
+    const internal::Heat_region_options options{threshold(), maximum_region_size, !balanced, spectral_group_size};
+    Eigen::VectorXd column_sums, peaks;
     // (the balancing takes a few products with K: a small part of the whole)
-    const internal::Progress progress = balanced ? whole_progress.part(0., 0.95) : whole_progress;
-    const internal::Indexed_mesh& mesh = ncc_->indexed_mesh();
-    const std::size_t n = mesh.number_of_vertices();
-    if(group_begin.empty())
-    {
-      for(std::size_t first = 0; first < n; first += spectral_group_size)
-        group_begin.push_back(first);
-      group_begin.push_back(n);
-    }
-    struct Scratch
-    {
-      std::vector<std::size_t> mark;  // generation stamps: no clearing between sources
-      std::size_t generation = 0;
-      std::vector<std::size_t> queue;
-      typename Columns::Workspace kernel_workspace;
-      internal::Column_group_matrix::Scratch group_places;  // for make_group()
-    };
-    // Memory (1.66M vertices, ~58 entries a column: 96M entries). The columns are
-    // computed in blocks of sources, in parallel within a block; the thread that
-    // computed a group's columns makes the group, and the block's groups are copied
-    // (in parallel too) to A_t's arrays, once: A_t is never held twice. The per-column
-    // vectors, the groups and the per-thread scratch are reused from block to block.
-    // Blocks are small enough for the progress to move about every 1 % at that size.
-    // (One small vector per column kept to the end would leave their memory in the
-    // allocator's arenas: 1.5 GB at that size.)
-    constexpr std::size_t block_size = 16384;
-    matrix_ = internal::Column_group_matrix(n);
-    std::vector<std::vector<std::pair<std::size_t, double> > > columns((std::min)(block_size, n));
-    std::vector<internal::Column_group_matrix::Group> groups;
-    internal::Per_thread_scratch<Scratch> scratches([&] {
-      return Scratch{std::vector<std::size_t>(n, 0), 0, {}, kernel.make_workspace(), matrix_.make_scratch()};
-    });
-    statistics_ = Heat_region_statistics();
-    statistics_.min_size = n;
-    // of the kernel values H, for the balancing; the peaks h_t(j, j) are K's diagonal
-    Eigen::VectorXd column_sums(balanced ? Eigen::Index(n) : 0), peaks(balanced ? Eigen::Index(n) : 0);
-    std::size_t total = 0;
-    progress.report(0., "the construction of the heat regions");
-    std::size_t group = 0;  // the first group of the block
-    for(std::size_t first = 0; first < n;)
-    {
-      // (a block ends with a group, so that no group is split between two blocks)
-      std::size_t last = (std::min)(first + block_size, n), end_group = group;
-      while(group_begin[end_group] < last)
-        ++end_group;
-      last = group_begin[end_group];
-      const std::size_t count = last - first;
-      if(columns.size() < count)
-        columns.resize(count);
-      if(groups.size() < end_group - group)
-        groups.resize(end_group - group);
-      auto compute_column = [&](std::size_t position, Scratch& s) {
-        const std::size_t j = order[first + position];
-        kernel.prepare(j, s.kernel_workspace);
-        auto h = [&](std::size_t i) { return kernel(j, i, s.kernel_workspace); };
-        ++s.generation;
-        const double peak = h(j);
-        const double tau = kernel.relative ? threshold() * peak : threshold();
-        auto& column = columns[position];
-        column.clear();
-        column.emplace_back(j, peak);
-        s.mark[j] = s.generation;
-        s.queue.assign(1, j);
-        for(std::size_t q = 0; q < s.queue.size() && column.size() < maximum_region_size; ++q)
-        {
-          const std::size_t i = s.queue[q];
-          for(std::size_t k = mesh.fan_begin[i]; k < mesh.fan_begin[i + 1]; ++k)
-          {
-            const std::size_t u = mesh.fan[k];
-            if(s.mark[u] == s.generation)
-              continue;
-            s.mark[u] = s.generation;
-            const double value = h(u);
-            if(value > tau && column.size() < maximum_region_size)
-            {
-              column.emplace_back(u, value);
-              s.queue.push_back(u);
-            }
-          }
-        }
-        // A region whose source value is not positive (possible only for a badly
-        // truncated kernel), or whose total is not finite (a kernel overflowing at an
-        // extreme t), keeps its heat: a column of the identity, never NaN in A_t.
-        double sum = 0;
-        for(const auto& entry : column)
-          sum += entry.second;
-        // (balanced: the kernel values are kept, and balanced once every column is known)
-        if(!(column.front().second > 0) || !(sum > 0) || !std::isfinite(sum))
-        {
-          column.assign(1, {j, 1.});
-          sum = 1.;
-        }
-        else if(normalization_ == Operator_normalization::columns)
-          for(auto& entry : column)
-            entry.second /= sum;
-        if(balanced)
-        {
-          column_sums[Eigen::Index(j)] = sum;
-          peaks[Eigen::Index(j)] = column.front().second;
-        }
-      };
-      internal::parallel_for_with_scratch(
-          end_group - group, scratches,
-          [&](std::size_t g, Scratch& s) {
-            const std::size_t begin = group_begin[group + g] - first, end = group_begin[group + g + 1] - first;
-            for(std::size_t position = begin; position < end; ++position)
-              compute_column(position, s);
-            internal::Column_group_matrix::make_group(columns.data() + begin, end - begin, s.group_places, groups[g]);
-          },
-          1);
-      matrix_.append(groups.data(), end_group - group, order.data() + first);
-      for(std::size_t position = 0; position < count; ++position)
-      {
-        const std::size_t size = columns[position].size();
-        total += size;
-        statistics_.min_size = (std::min)(statistics_.min_size, size);
-        statistics_.max_size = (std::max)(statistics_.max_size, size);
-        statistics_.collapsed_regions += size == 1 ? 1 : 0;
-        statistics_.capped_regions += size >= maximum_region_size ? 1 : 0;
-      }
-      group = end_group;
-      progress.report(double(last) / double(n), "the construction of the heat regions");
-      first = last;
-    }
-    statistics_.mean_size = double(total) / double(n);
-    matrix_.finish();
+    internal::build_heat_regions(columns, ncc_->indexed_mesh(), order, group_begin, options,
+                                 balanced ? progress.part(0., 0.95) : progress, matrix_, statistics_, column_sums,
+                                 peaks);
     if(balanced)
-      balance(column_sums, peaks, whole_progress.part(0.95, 1.));
+      balance(column_sums, peaks, progress.part(0.95, 1.));
   }
 
   // operator_matrix(), made on the first call (thread-safe), shared by copies.

@@ -7,6 +7,7 @@
 #define CGAL_HEAT_DIFFUSION_EDGE_WEIGHTED_HEAT_KERNEL_H
 
 #include <CGAL/Heat_diffusion/internal/coarse_level.h>
+#include <CGAL/Heat_diffusion/internal/errors.h>
 #include <CGAL/Heat_diffusion/internal/generalized_eigensolver.h>
 #include <CGAL/Heat_diffusion/internal/heat_operators.h>
 #include <CGAL/Heat_diffusion/internal/progress.h>
@@ -155,8 +156,7 @@ public:
     scale_invariant_ = choose_parameter(get_parameter(np, internal_np::scale_invariant_kernel), false);
     const internal::Progress progress(
         choose_parameter(get_parameter(np, internal_np::progress_callback), std::function<bool(double)>()));
-    if(!(sigma_ > 0) || std::isnan(sigma_))
-      internal::throw_invalid_input("Edge_weighted_heat_kernel: sigma must be positive");
+    internal::checked_sigma(sigma_, "Edge_weighted_heat_kernel");
     if(!(requested_m >= 1))
       internal::throw_invalid_input("Edge_weighted_heat_kernel: number_of_eigenpairs must be positive");
 
@@ -306,15 +306,17 @@ public:
     return eigenvectors_ * coefficients;
   }
 
-private:
-  // Anisotropic_heat_diffusion evaluates the kernel from the coarse factors below.
-  template <typename, typename>
-  friend class Anisotropic_heat_diffusion;
-
+  /// \cond SKIP_IN_MANUAL
+  // What Anisotropic_heat_diffusion evaluates the kernel from (internal/kernel_columns.h).
   // With a coarse level, eigenvectors() = coarse_prolongation() * coarse_eigenvectors()
   // (fine x coarse, three entries a row, times coarse x m). Empty without a coarse level.
   const Eigen::SparseMatrix<double, Eigen::RowMajor>& coarse_prolongation() const { return coarse_prolongation_; }
   const Eigen::MatrixXd& coarse_eigenvectors() const { return coarse_eigenvectors_; }
+  // The diagonal of B, of which eq. 14's beta is made.
+  const Eigen::VectorXd& mass_diagonal() const { return mass_diagonal_; }
+  /// \endcond
+
+private:
 
   // The factor beta_ij of eq. 14 (evaluated for every entry of every heat region of the
   // scale-invariant kernel: from the stored diagonal, not searched in B's columns).

@@ -8,6 +8,7 @@
 #define CGAL_HEAT_DIFFUSION_DECOMPOSITION_H
 
 #include <CGAL/Heat_diffusion/Anisotropic_heat_diffusion.h>
+#include <CGAL/Heat_diffusion/internal/errors.h>
 #include <CGAL/Heat_diffusion/parameters.h>
 #include <CGAL/Heat_diffusion/reconstruction.h>
 

@@ -7,6 +7,7 @@
 #define CGAL_HEAT_DIFFUSION_MULTISCALE_FEATURES_H
 
 #include <CGAL/Heat_diffusion/Anisotropic_heat_diffusion.h>
+#include <CGAL/Heat_diffusion/internal/errors.h>
 #include <CGAL/Heat_diffusion/parameters.h>
 
 #include <CGAL/boost/graph/named_params_helper.h>
@@ -96,7 +97,8 @@ inline void check_field_is_finite(const Eigen::VectorXd& field, const char* func
     }
 }
 
-// The criterion of the paper (section 7), with NOTES 12 for the concave mirror:
+// The criterion of the paper (section 7), which states the convex case; the concave
+// one is its mirror:
 // i is convex if F(i) > F(j) for every j != i of its 2-ring and F(i) > c max F,
 // concave if F(i) < F(j) for every such j and F(i) < c min F. The 2-ring is visited
 // as the one-ring and the one-rings of its vertices; i itself, met there again, is

@@ -6,6 +6,7 @@
 #ifndef CGAL_HEAT_DIFFUSION_RECONSTRUCTION_H
 #define CGAL_HEAT_DIFFUSION_RECONSTRUCTION_H
 
+#include <CGAL/Heat_diffusion/internal/errors.h>
 #include <CGAL/Heat_diffusion/internal/sparse_cholesky.h>
 #include <CGAL/Heat_diffusion/normal_controlled_coordinates.h>
 

@@ -4,6 +4,8 @@
 #ifndef CGAL_HEAT_DIFFUSION_INTERNAL_INDEXED_MESH_H
 #define CGAL_HEAT_DIFFUSION_INTERNAL_INDEXED_MESH_H
 
+#include <CGAL/Heat_diffusion/internal/errors.h>
+
 #include <CGAL/Dynamic_property_map.h>
 #include <CGAL/Exact_predicates_inexact_constructions_kernel.h>
 #include <CGAL/Named_function_parameters.h>
@@ -33,13 +35,6 @@
 namespace CGAL {
 namespace Heat_diffusion {
 namespace internal {
-
-// Throws std::invalid_argument with the package prefix, so that every message of
-// the package says where it comes from.
-[[noreturn]] inline void throw_invalid_input(const std::string& what)
-{
-  throw std::invalid_argument("CGAL::Heat_diffusion: " + what);
-}
 
 // A validated, array-based copy of a triangle mesh, in which all numerical work of
 // the package is done (in double, whatever the kernel of the input).

@@ -23,10 +23,11 @@ namespace internal {
 
 // The stiffness matrix L and the mass matrix B of the edge-weighted heat equation
 // B u' = -L u (paper, eq. 10-12), on the copy of the surface rescaled so that its
-// total area equals the number of vertices (NOTES 6: t = 1 is then about one ring).
+// total area equals the number of vertices (the paper's time scale, section 6: the mean
+// vertex area is then 1, and t = 1 spreads heat over about one ring).
 struct Heat_operators
 {
-  Eigen::SparseMatrix<double> stiffness;  // L = D - W, positive semi-definite (NOTES 5)
+  Eigen::SparseMatrix<double> stiffness;  // L = D - W, positive semi-definite (eq. 10 prints W - D)
   Eigen::SparseMatrix<double> mass;       // FEM mass matrix, eq. 11
   double area_scale = 1.;                 // rescaled area = area_scale * area of the normalised frame
 };
@@ -114,7 +115,7 @@ inline Heat_operators assemble_heat_operators(const Indexed_mesh& mesh, const Nc
     const auto position = [&](std::size_t j) {
       return std::size_t(std::lower_bound(row, row + size, Storage_index(j)) - row);
     };
-    // L = D - W (eq. 10, NOTES 5), and B (eq. 11): B_ij = (|t_r| + |t_s|) / 12 over the
+    // L = D - W (eq. 10 with the sign that makes heat flow from hot to cold), and B (eq. 11): B_ij = (|t_r| + |t_s|) / 12 over the
     // faces sharing edge ij, B_ii = (sum of the incident face areas) / 6.
     const std::size_t fan_begin = mesh.fan_begin[i], degree = mesh.degree(i);
     for(std::size_t f = 0; f < degree; ++f)

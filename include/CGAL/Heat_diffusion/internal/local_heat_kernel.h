@@ -10,6 +10,9 @@
 #define CGAL_HEAT_DIFFUSION_INTERNAL_LOCAL_HEAT_KERNEL_H
 
 #include <CGAL/Heat_diffusion/internal/Indexed_mesh.h>
+#include <CGAL/Heat_diffusion/internal/rational_exponential.h>
+#include <CGAL/Heat_diffusion/internal/vector_clones.h>
+#include <CGAL/Heat_diffusion/internal/vertex_clusters.h>
 
 #include <Eigen/Core>
 #include <Eigen/OrderingMethods>
@@ -27,180 +30,9 @@
 #include <utility>
 #include <vector>
 
-// The factorisation and the forward and back substitutions are the largest part of the
-// local kernel's time, and they vectorise. A compiler's default target is the baseline
-// x86-64 (SSE2); with GCC 11 or later on x86-64 Linux (GNU ifunc) they are also compiled
-// for the x86-64-v4 (AVX-512) and x86-64-v3 (AVX2 and FMA) levels, and the code of the
-// highest level the processor has is chosen at run time. Define
-// CGAL_HEAT_DIFFUSION_NO_TARGET_CLONES to compile the baseline alone. (The sanitizer build
-// of the tests uses clang, so it runs the baseline.)
-#if defined(__GNUC__) && !defined(__clang__) && __GNUC__ >= 11 && defined(__x86_64__) && defined(__linux__) && \
-    !defined(CGAL_HEAT_DIFFUSION_NO_TARGET_CLONES)
-#define CGAL_HEAT_DIFFUSION_VECTOR_CLONES \
-  __attribute__((target_clones("arch=x86-64-v4", "arch=x86-64-v3", "default")))
-#define CGAL_HEAT_DIFFUSION_HAS_VECTOR_CLONES
-#else
-#define CGAL_HEAT_DIFFUSION_VECTOR_CLONES
-#endif
-
 namespace CGAL {
 namespace Heat_diffusion {
 namespace internal {
-
-// Vectors (GCC's and Clang's vector extensions) of 256 bits where they fit one AVX
-// register: in the x86-64-v3 and v4 clones, or when the compiler targets AVX; and of 512
-// bits where they fit an AVX-512 register. The factorisation updates the poles of a row
-// at once in four doubles (0.84 of the time on armadillo at 416k), and the substitutions,
-// in single precision, run over whole passes in vectors of eight or sixteen floats.
-// Elsewhere (other compilers, a baseline build, the baseline clone, or
-// CGAL_HEAT_DIFFUSION_NO_VECTOR_EXTENSIONS), plain loops that the compiler vectorises
-// itself: GCC's SSE2 code for the vectors was 2.4 times slower. (The vectors are passed
-// by reference: by value, they would change the calling convention between the baseline
-// code and its clone.)
-#if defined(__GNUC__) && (defined(__AVX__) || defined(CGAL_HEAT_DIFFUSION_HAS_VECTOR_CLONES)) && \
-    !defined(CGAL_HEAT_DIFFUSION_NO_VECTOR_EXTENSIONS)
-#define CGAL_HEAT_DIFFUSION_VECTOR_EXTENSIONS
-typedef double Four_doubles __attribute__((vector_size(4 * sizeof(double))));
-typedef float Eight_floats __attribute__((vector_size(8 * sizeof(float))));
-typedef float Sixteen_floats __attribute__((vector_size(16 * sizeof(float))));
-
-// (unaligned: the rows of the blocks and of the factor need not start on a vector)
-template <typename Vector, typename Scalar>
-inline void load_vector(Vector& x, const Scalar* p)
-{
-  std::memcpy(&x, p, sizeof x);
-}
-template <typename Vector, typename Scalar>
-inline void store_vector(Scalar* p, const Vector& x)
-{
-  std::memcpy(p, &x, sizeof x);
-}
-
-// Whether the code runs with AVX: always when compiled for it, else when the processor
-// runs the x86-64-v3 clone (the baseline clone takes the plain loops).
-inline bool vector_registers_of_256_bits()
-{
-#ifdef __AVX__
-  return true;
-#else
-  static const bool x86_64_v3 = __builtin_cpu_supports("avx2") && __builtin_cpu_supports("fma");
-  return x86_64_v3;
-#endif
-}
-
-// Whether vectors of 512 bits fit a register: always when compiled for AVX-512,
-// else when the processor runs the x86-64-v4 clone. (Where this would disagree with
-// the choice of the clone, the code stays right, only slower.)
-inline bool vector_registers_of_512_bits()
-{
-#if defined(__AVX512F__)
-  return true;
-#elif defined(CGAL_HEAT_DIFFUSION_HAS_VECTOR_CLONES)
-  static const bool x86_64_v4 = vector_registers_of_256_bits() && __builtin_cpu_supports("avx512f") &&
-                                __builtin_cpu_supports("avx512vl") && __builtin_cpu_supports("avx512bw") &&
-                                __builtin_cpu_supports("avx512dq") && __builtin_cpu_supports("avx512cd");
-  return x86_64_v4;
-#else
-  return false;
-#endif
-}
-#endif
-
-// The rational approximation of exp(-x) on [0, inf) used by the local kernel:
-//   exp(-x) ~ sum_k Re( a_k / (-x - z_k) ),
-// one term per pole z_k with Im z_k >= 0 (its conjugate is accounted for by the real
-// part). The poles are those of the Caratheodory-Fejer approximation of type (6, 6)
-// (Trefethen, Weideman and Schmelzer 2006), the residues a_k a least-squares fit with
-// Lawson weights without a constant term, so that r(inf) = 0. Maximum error on
-// [0, inf): 1.5e-6 (checked by test_local_heat_kernel).
-struct Exponential_pole
-{
-  double pole_real, pole_imag, residue_real, residue_imag;
-};
-
-inline const std::array<Exponential_pole, 3>& exponential_poles()
-{
-  static const std::array<Exponential_pole, 3> poles = {{
-      {2.40060293892545, 1.1931293084021366, -1.1587937012299794314, -8.5730404167499296624},
-      {-1.7819882759326164, 6.196512467349581, -0.16700572322229976563, -0.213022846594453875},
-      {1.1585525717103486, 3.614772600820088, 1.3265003633611509662, 2.9033265650419489995}}};
-  return poles;
-}
-
-// r(x) of exponential_poles(), for tests.
-inline double rational_exponential(double x)
-{
-  double sum = 0;
-  for(const Exponential_pole& p : exponential_poles())
-  {
-    // Re(a / w), w = -x - z
-    const double wr = -x - p.pole_real, wi = -p.pole_imag;
-    sum += (p.residue_real * wr + p.residue_imag * wi) / (wr * wr + wi * wi);
-  }
-  return sum;
-}
-
-// The vertices partitioned into compact clusters of at most `cluster_size` vertices:
-// seeds taken in breadth-first order, each cluster grown breadth first from its seed
-// through the vertices not yet taken. Returns the clusters one after the other, and
-// in `begin` (if given) where each starts (with the end as last entry).
-inline std::vector<std::size_t> clustered_order(const Indexed_mesh& mesh, std::size_t cluster_size,
-                                                std::vector<std::size_t>* begin = nullptr)
-{
-  const std::size_t n = mesh.number_of_vertices();
-  // breadth-first order of the whole mesh, one component after the other
-  std::vector<std::size_t> bfs;
-  bfs.reserve(n);
-  std::vector<unsigned char> seen(n, 0);
-  for(std::size_t s = 0; s < n; ++s)
-  {
-    if(seen[s])
-      continue;
-    seen[s] = 1;
-    std::size_t q = bfs.size();
-    bfs.push_back(s);
-    for(; q < bfs.size(); ++q)
-    {
-      const std::size_t i = bfs[q];
-      for(std::size_t k = mesh.fan_begin[i]; k < mesh.fan_begin[i + 1]; ++k)
-        if(!seen[mesh.fan[k]])
-        {
-          seen[mesh.fan[k]] = 1;
-          bfs.push_back(mesh.fan[k]);
-        }
-    }
-  }
-  std::vector<std::size_t> order;
-  order.reserve(n);
-  if(begin != nullptr)
-    begin->clear();
-  std::vector<unsigned char> taken(n, 0);
-  std::vector<std::size_t> touched;
-  std::fill(seen.begin(), seen.end(), 0);
-  for(std::size_t seed : bfs)
-  {
-    if(taken[seed])
-      continue;
-    if(begin != nullptr)
-      begin->push_back(order.size());
-    const std::size_t first = order.size();
-    taken[seed] = 1;
-    order.push_back(seed);
-    for(std::size_t q = first; q < order.size() && order.size() - first < cluster_size; ++q)
-    {
-      const std::size_t i = order[q];
-      for(std::size_t k = mesh.fan_begin[i]; k < mesh.fan_begin[i + 1] && order.size() - first < cluster_size; ++k)
-        if(!taken[mesh.fan[k]])
-        {
-          taken[mesh.fan[k]] = 1;
-          order.push_back(mesh.fan[k]);
-        }
-    }
-  }
-  if(begin != nullptr)
-    begin->push_back(order.size());
-  return order;
-}
 
 // The number of sources whose columns share one patch and its factorisations.
 constexpr std::size_t default_local_cluster_size = 96;
