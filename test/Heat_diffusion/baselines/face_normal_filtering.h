@@ -13,6 +13,7 @@
 #include <CGAL/boost/graph/iterator.h>
 
 #include <Eigen/Core>
+#include <Eigen/Geometry>
 
 #include <algorithm>
 #include <array>
