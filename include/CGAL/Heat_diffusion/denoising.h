@@ -35,9 +35,8 @@ enum class Denoising_method
 {
   /// The default: anisotropic diffusion of the face normals, whose edge weights
   /// are those of eq. 10 with the normals in place of the NCC, alternated with
-  /// vertex updates that fit the faces to the diffused normals, for as long as the
-  /// vertices have moved less than the noise level estimated from the Normal
-  /// Signature (see `denoise_mesh()`).
+  /// vertex updates that fit the faces to the diffused normals; the noise level, the
+  /// weights and the stop adapt to the mesh (see `denoise_mesh()`).
   normal_filtering,
   /// The paper's pipeline (eq. 22-23): the Normal Signature diffused with the
   /// edge-weighted heat kernel, the normals updated, the vertices reconstructed by
@@ -55,28 +54,31 @@ enum class Denoising_method
 /// (section 7, eq. 22-23) diffuses the Normal Signature and reconstructs the vertices
 /// from it; on a noisy mesh the diffused signature is too poor a target (see the user
 /// manual), so the default diffuses the <em>normals</em> with the anisotropic edge weights
-/// of eq. 10 instead, and fits the vertices to them:
-///  1. the noise level \f$ \hat\varepsilon \f$ of the input is estimated from its Normal
-///     Signature: \f$ h_i = s_i \sqrt{a_i} \f$ is the height of \f$ v_i \f$ above the NCC-weighted
-///     average of its neighbours; \f$ \hat\varepsilon \f$ is the median over interior vertices of
-///     \f$ |h_i - \sum_j \omega_{ij} h_j| \f$ (about the standard deviation of noise along the
-///     normals: 0.6 to 1.2 times it on fandisk, elephant and armadillo with 0.1 to 0.5
-///     mean edge length of noise);
-///  2. each iteration diffuses the face normals `number_of_steps` times,
-///     \f$ n_f \leftarrow \sum_{g} a_g\, e^{-|c_f - c_g|^2/2\sigma_c^2}\, e^{-|n_f - n_g|^2/2\sigma_n^2}\, n_g \f$
-///     (normalised) over f and the faces g sharing a vertex with f (\f$ a_g \f$ areas,
-///     \f$ c_g \f$ centroids, \f$ \sigma_c \f$ the mean distance between the centroids of
-///     adjacent faces, \f$ \sigma_n \f$ = `normal_sigma`): the weights of eq. 10 with
-///     normals in place of the NCC, which stop the diffusion across creases;
-///  3. then moves the vertices so that the faces fit the diffused normals (five Jacobi
-///     steps of \f$ v_i \leftarrow v_i + \frac{1}{|F_i|}\sum_{f \ni v_i} n_f n_f^T (c_f - v_i) \f$,
+/// of eq. 10 instead, and fits the vertices to them. Every length it uses is local to a
+/// vertex or a face, so that meshes of very uneven triangles are treated like even ones:
+///  1. the noise level \f$ \hat\varepsilon \f$ is the median over interior vertices of the
+///     distance of \f$ v_i \f$, along its area-weighted normal, from the mean of its
+///     neighbours, divided by \f$ 0.6745 \sqrt{1 + 1/d_i} \f$ (\f$ d_i \f$ the degree): about
+///     the standard deviation of Gaussian noise along the normals;
+///  2. an iteration diffuses the face normals `number_of_steps` times,
+///     \f$ n_f \leftarrow \sum_{g} a_g\, e^{-|n_f - n_g|^2/2\sigma_n^2}\, n_g \f$
+///     (normalised) over f and the faces g sharing a vertex with f (\f$ a_g \f$ areas):
+///     the weights of eq. 10 with normals in place of the NCC, which stop the diffusion
+///     across creases; then moves the vertices so that the faces fit the diffused normals
+///     (five Jacobi steps of \f$ v_i \leftarrow v_i + \frac{1}{|F_i|}\sum_{f \ni v_i} n_f n_f^T (c_f - v_i) \f$,
 ///     the vertex update of Sun et al. 2007);
-///  4. and stops after `number_of_iterations` iterations, or as soon as the root mean
-///     square displacement of the vertices from the input reaches `displacement_limit`
-///     \f$ \times\, \hat\varepsilon \f$: a mesh should not be moved further than its noise.
-///     This stop matters on smooth meshes whose detail is at the scale of the edges,
-///     where the diffusion keeps removing shape; on meshes of flat parts and creases the
-///     iterations converge before.
+///  3. with \f$ \sigma_n = 0.45 \f$ (faces across a crease of 40 degrees or more weigh each
+///     other less than a third), the iterations run until the root mean square
+///     displacement of the vertices reaches `displacement_limit` \f$ \times\, \hat\varepsilon \f$;
+///  4. if the result is then piecewise flat (its own noise level, measured as in 1, is
+///     below 0.15 \f$ \hat\varepsilon \f$: CAD parts), the iterations go on, up to
+///     `number_of_iterations` or until the vertices stop moving: flat parts and sharp
+///     creases are the fixed point of the filter;
+///  5. otherwise the surface is curved: the range weights would freeze the noise into
+///     false creases, so the input is filtered again with isotropic weights
+///     (\f$ \sigma_n = \infty \f$) until the displacement of 3.
+/// A `normal_sigma` given by the user replaces 3 to 5 by iterations with that width until
+/// the displacement of 3. A mesh whose noise level is 0 is left unchanged.
 ///
 /// <b>`Denoising_method::signature_diffusion`: the paper's pipeline.</b> Each of the
 /// `number_of_iterations` iterations
@@ -100,8 +102,9 @@ enum class Denoising_method
 /// its corners.
 ///
 /// Every position stays finite. The defaults were chosen by measurement on CGAL's
-/// `fandisk.off`, `elephant.off` and `armadillo.off` with Gaussian noise along the
-/// normals of 0.1 to 0.5 mean edge length (see the user manual for the table).
+/// meshes (CAD parts with creases, CAD parts of needle triangles, organic shapes) with
+/// Gaussian noise of 0.1 to 0.5 mean edge length along the normals and in random
+/// directions (see the user manual for the table).
 ///
 /// @tparam TriangleMesh a model of `FaceListGraph` and `HalfedgeListGraph`
 /// @tparam NamedParameters a sequence of named parameters
@@ -118,22 +121,22 @@ enum class Denoising_method
 ///   \cgalParamNBegin{number_of_iterations}
 ///     \cgalParamDescription{the (largest) number of outer iterations; 0 leaves `tm` unchanged}
 ///     \cgalParamType{`unsigned int` (\cgal's own named parameter `CGAL::parameters::number_of_iterations`)}
-///     \cgalParamDefault{`100` (normal filtering; the displacement limit usually stops it before) or `2` (signature diffusion)}
+///     \cgalParamDefault{`40` (normal filtering; on curved surfaces the displacement limit stops it before) or `2` (signature diffusion)}
 ///   \cgalParamNEnd
 ///   \cgalParamNBegin{number_of_steps}
 ///     \cgalParamDescription{normal filtering: the number of diffusion steps of the face normals per iteration; signature diffusion: the number k of diffusion steps of the signature per iteration}
 ///     \cgalParamType{`std::size_t`}
-///     \cgalParamDefault{`2` (normal filtering) or `1` (signature diffusion)}
+///     \cgalParamDefault{`1`}
 ///   \cgalParamNEnd
 ///   \cgalParamNBegin{normal_sigma}
-///     \cgalParamDescription{normal filtering only: the width \f$ \sigma_n \f$ of the normal weights; smaller keeps more creases, and more noise}
+///     \cgalParamDescription{normal filtering only: the width \f$ \sigma_n \f$ of the normal weights, used for all iterations (see above); smaller keeps more creases, and more noise}
 ///     \cgalParamType{`double`, positive}
-///     \cgalParamDefault{\f$ \max(0.4,\ 1.6\,\hat\varepsilon / \bar e) \f$, \f$ \bar e \f$ the mean edge length: wider for noisier meshes}
+///     \cgalParamDefault{chosen by the algorithm (0.45, or infinite on curved surfaces)}
 ///   \cgalParamNEnd
 ///   \cgalParamNBegin{displacement_limit}
-///     \cgalParamDescription{normal filtering only: the iterations stop once the root mean square displacement from the input reaches this multiple of the estimated noise level; `std::numeric_limits<double>::infinity()` runs all of them}
+///     \cgalParamDescription{normal filtering only: the multiple of the estimated noise level that the root mean square displacement from the input must reach to end the crease-preserving phase and the isotropic filtering (see above); `std::numeric_limits<double>::infinity()` runs all the iterations}
 ///     \cgalParamType{`double`, positive}
-///     \cgalParamDefault{`1.1`}
+///     \cgalParamDefault{`1`}
 ///   \cgalParamNEnd
 ///   \cgalParamNBegin{sigma}
 ///     \cgalParamDescription{signature diffusion only: the width of the edge weights of the heat kernel; values much smaller than the noise of the NCC make the eigen solve fail (see above)}
@@ -194,10 +197,9 @@ enum class Denoising_method
 ///   diffusion), or if the `progress_callback` cancels.
 ///
 /// Complexity: normal filtering: linear in the size of `tm` per iteration (parallel
-/// with TBB); with the defaults, 3 to 42 iterations on the meshes of the user manual's
-/// table. Measured in all on a shared 2-core machine, depending on the noise (0.1 to 0.5
-/// mean edge length) and the load: below 0.05 s on the 2775 vertices of `elephant.off`, 0.03 to 0.5 s on the 6475 of
-/// `fandisk.off`, 0.1 to 0.5 s on the 26002 of `armadillo.off`.
+/// with TBB), at most `number_of_iterations` iterations plus those of the isotropic
+/// filtering on curved surfaces (see `benchmark_denoising` for times measured against
+/// the published filters).
 /// Signature diffusion: per iteration, one edge-weighted heat kernel (a sparse Cholesky
 /// factorisation and a Lanczos iteration of \f$ O(n m^2) \f$ dense work: most of the time),
 /// the operator \f$ A_t \f$ (linear in n), k sparse products and one sparse Cholesky
