@@ -1,100 +1,133 @@
 // Copyright (c) 2026 The CGAL Heat_diffusion developers.
 // SPDX-License-Identifier: LGPL-3.0-or-later
 //
-// Denoising quality of denoise_mesh() against two baselines, on CGAL's meshes with
-// Gaussian noise along the normals of 0.1, 0.2, 0.3 and 0.5 mean edge length:
-//  - CGAL's Polygon_mesh_processing::smooth_shape (mean curvature flow), best of a
-//    grid of time steps and iteration counts;
-//  - bilateral mesh denoising (Fleishman, Drori and Cohen-Or 2003), in
-//    test/Heat_diffusion/mesh_measures.h (test_denoising uses the same), best of a grid
-//    of its two widths and iteration counts.
-// denoise_mesh() is run with its defaults (normal filtering) and as the best of a
-// small grid too; the paper's pipeline (Denoising_method::signature_diffusion) with
-// its defaults, with the spectral kernel and with the local one (the default kernel), and its
-// reconstruction with the clean mesh's own Normal Signature and
-// normals as targets ("NS oracle"): the same reconstruction fed with perfect targets,
-// which separates what the diffusion of the signature costs from what the
-// reconstruction costs.
+// Denoising quality of denoise_mesh() against published filters, all run in the same
+// process on the same noisy meshes:
+//  - Guided Mesh Normal Filtering (GNF, Zhang et al. 2015) and Bilateral Normal
+//    Filtering (BNF, Zheng et al. 2011), at their papers' default parameters
+//    (test/Heat_diffusion/baselines/);
+//  - bilateral mesh denoising (Fleishman, Drori and Cohen-Or 2003), best of a grid of
+//    its two widths and iteration counts (test/Heat_diffusion/mesh_measures.h);
+//  - Taubin's lambda|mu smoothing, best of a range of iteration counts;
+//  - CGAL's Polygon_mesh_processing::smooth_shape, best of a grid of time steps and
+//    iteration counts;
+//  - optionally (--signature) the paper's pipeline, Denoising_method::signature_diffusion.
+// The benchmark set: CAD meshes with flat parts and creases, CAD meshes with needle
+// triangles (minimum angle under 10 degrees on most faces), organic meshes; Gaussian
+// noise of 0.1, 0.2, 0.3 and 0.5 mean edge length, along the vertex normals and in
+// random directions, with fixed seeds.
 //
-// Metrics: MAD, the mean angle in degrees between corresponding face normals of the
-// result and of the clean mesh; RMS, the root mean square vertex distance to the
-// clean mesh in mean edge lengths. The grids are searched for the lowest MAD.
+// Metrics, for every method: MAD, the mean angle in degrees between corresponding face
+// normals of the result and of the clean mesh (the grids are searched for the lowest
+// MAD); RMS, the root mean square vertex distance to the clean mesh in mean edge
+// lengths; the volume change in percent (closed meshes); the faces whose normal is
+// flipped (more than 90 degrees from the clean one); the intersecting face pairs beyond
+// those of the clean mesh; the time of the chosen setting.
 //
-// Usage: benchmark_denoising [mesh.off ...]   (default: fandisk, elephant, armadillo)
+// Usage: benchmark_denoising [--quick] [--signature] [--normal-only] [--noise x]... [mesh ...]
+//   --quick       fandisk, anchor and elephant at noise 0.3 and 0.5 along the normals
+//   --signature   also run the paper's pipeline (slow)
+//   --normal-only only the noise along the normals
+//   --noise x     only this noise level (repeatable)
+//   mesh          a file name in CGAL's data set, or a path (default: the whole set)
 
 #include <CGAL/Exact_predicates_inexact_constructions_kernel.h>
 #include <CGAL/Surface_mesh.h>
 
 #include "mesh_measures.h"
+#include "baselines/bilateral_normal_filtering.h"
+#include "baselines/guided_normal_filtering.h"
+#include "baselines/taubin_smoothing.h"
 
 #include <CGAL/Heat_diffusion/denoising.h>
 #include <CGAL/Polygon_mesh_processing/IO/polygon_mesh_io.h>
 #include <CGAL/Polygon_mesh_processing/compute_normal.h>
+#include <CGAL/Polygon_mesh_processing/measure.h>
+#include <CGAL/Polygon_mesh_processing/self_intersections.h>
 #include <CGAL/Polygon_mesh_processing/smooth_shape.h>
 
 #include <algorithm>
 #include <chrono>
 #include <cmath>
 #include <cstdio>
+#include <cstring>
+#include <functional>
 #include <iostream>
+#include <iterator>
 #include <limits>
-#include <random>
+#include <map>
 #include <sstream>
 #include <string>
 #include <vector>
 
 namespace HD = CGAL::Heat_diffusion;
 namespace PMP = CGAL::Polygon_mesh_processing;
+namespace B = test_support::baselines;
 
 typedef CGAL::Exact_predicates_inexact_constructions_kernel Kernel;
 typedef Kernel::Point_3 Point_3;
 typedef Kernel::Vector_3 Vector_3;
 typedef CGAL::Surface_mesh<Point_3> Mesh;
 typedef Mesh::Vertex_index Vertex;
+typedef Mesh::Face_index Face;
 
 namespace {
 
-// The noise of the tests: Gaussian, along the vertex normals, of standard deviation
-// `relative_sigma` mean edge lengths, seeded.
-Mesh noisy_copy(const Mesh& clean, double relative_sigma, unsigned seed)
+struct Reference
 {
-  Mesh mesh = clean;
-  test_support::add_normal_noise(mesh, relative_sigma, seed);
-  return mesh;
+  Mesh clean;
+  std::vector<Vector_3> normals;
+  double edge = 0;
+  bool closed = false;
+  double volume = 0;
+  std::size_t intersections = 0;
+};
+
+std::size_t count_self_intersections(const Mesh& mesh)
+{
+  std::vector<std::pair<Face, Face> > pairs;
+  PMP::self_intersections(mesh, std::back_inserter(pairs));
+  return pairs.size();
 }
 
 struct Score
 {
   double mad = std::numeric_limits<double>::infinity();
-  double rms = std::numeric_limits<double>::infinity();
-  double seconds = 0;
+  double rms = 0, volume_change = 0, seconds = 0;
+  std::size_t flipped = 0;
+  long new_intersections = 0;
   std::string setting;
 };
 
-Score score(const Mesh& clean, const Mesh& result, double edge)
+double mad_of(const Reference& ref, const Mesh& result, std::size_t* flipped = nullptr)
 {
-  Score s;
-  double angles = 0, squares = 0;
-  for(auto f : clean.faces())
+  double angles = 0;
+  std::size_t k = 0, flips = 0;
+  for(Face f : result.faces())
   {
-    const Vector_3 a = PMP::compute_face_normal(f, clean), b = PMP::compute_face_normal(f, result);
-    angles += std::acos((std::max)(-1., (std::min)(1., a * b)));
+    const Vector_3 b = PMP::compute_face_normal(f, result);
+    const double c = (std::max)(-1., (std::min)(1., ref.normals[k++] * b));
+    angles += std::acos(c);
+    flips += c < 0 ? 1 : 0;
   }
-  for(auto v : clean.vertices())
-    squares += CGAL::squared_distance(clean.point(v), result.point(v));
-  s.mad = angles / double(clean.number_of_faces()) * 180. / CGAL_PI;
-  s.rms = std::sqrt(squares / double(clean.number_of_vertices())) / edge;
-  return s;
+  if(flipped != nullptr)
+    *flipped = flips;
+  return angles / double(result.number_of_faces()) * 180. / CGAL_PI;
 }
 
-void keep_best(Score& best, Score candidate, const std::string& setting, double seconds)
+Score full_score(const Reference& ref, const Mesh& result, double seconds, const std::string& setting)
 {
-  if(candidate.mad < best.mad)
-  {
-    candidate.setting = setting;
-    candidate.seconds = seconds;
-    best = candidate;
-  }
+  Score s;
+  s.mad = mad_of(ref, result, &s.flipped);
+  double squares = 0;
+  for(Vertex v : ref.clean.vertices())
+    squares += CGAL::squared_distance(ref.clean.point(v), result.point(v));
+  s.rms = std::sqrt(squares / double(ref.clean.number_of_vertices())) / ref.edge;
+  s.volume_change = ref.closed ? 100. * (PMP::volume(result) - ref.volume) / ref.volume : 0.;
+  s.new_intersections = long(count_self_intersections(result)) - long(ref.intersections);
+  s.seconds = seconds;
+  s.setting = setting;
+  return s;
 }
 
 double seconds_since(std::chrono::steady_clock::time_point start)
@@ -110,168 +143,227 @@ std::string format(double x, int precision = 3)
   return os.str();
 }
 
-const std::vector<unsigned> iteration_counts = {1, 2, 3, 5, 10};
-
-Score best_bilateral(const Mesh& clean, const Mesh& noisy, double edge)
+// A method run once with fixed parameters.
+Score run_once(const Reference& ref, const Mesh& noisy, const std::function<void(Mesh&)>& method,
+               const std::string& setting)
 {
-  Score best;
+  Mesh mesh = noisy;
+  const auto start = std::chrono::steady_clock::now();
+  method(mesh);
+  const double seconds = seconds_since(start);
+  return full_score(ref, mesh, seconds, setting);
+}
+
+// An iterated method over a grid: `make(setting)` returns one iteration's step; the
+// lowest MAD over the settings and the iteration counts in `counts` is kept.
+struct Grid_best
+{
+  double mad = std::numeric_limits<double>::infinity();
+  Mesh mesh;
+  double seconds = 0;
+  std::string setting;
+  void consider(const Reference& ref, const Mesh& candidate, double seconds_, const std::string& setting_)
+  {
+    const double m = mad_of(ref, candidate);
+    if(m < mad)
+    {
+      mad = m;
+      mesh = candidate;
+      seconds = seconds_;
+      setting = setting_;
+    }
+  }
+  Score score(const Reference& ref) const { return full_score(ref, mesh, seconds, setting); }
+};
+
+const std::vector<unsigned> bilateral_counts = {1, 2, 3, 5, 10};
+
+Score best_bilateral(const Reference& ref, const Mesh& noisy)
+{
+  Grid_best best;
   for(double c : {1., 1.5, 2.})
     for(double s : {0.3, 0.6, 1.})
     {
       Mesh mesh = noisy;
       const auto start = std::chrono::steady_clock::now();
-      for(unsigned it = 1; it <= iteration_counts.back(); ++it)
+      for(unsigned it = 1; it <= bilateral_counts.back(); ++it)
       {
-        test_support::bilateral_denoising_iteration(mesh, c * edge, s * edge);
-        if(std::find(iteration_counts.begin(), iteration_counts.end(), it) != iteration_counts.end())
-          keep_best(best, score(clean, mesh, edge),
-                    "sc " + format(c) + "e, ss " + format(s) + "e, " + std::to_string(it) + " it",
-                    seconds_since(start));
+        test_support::bilateral_denoising_iteration(mesh, c * ref.edge, s * ref.edge);
+        if(std::find(bilateral_counts.begin(), bilateral_counts.end(), it) != bilateral_counts.end())
+          best.consider(ref, mesh, seconds_since(start),
+                        "sc " + format(c) + "e, ss " + format(s) + "e, " + std::to_string(it) + " it");
       }
     }
-  return best;
+  return best.score(ref);
+}
+
+Score best_taubin(const Reference& ref, const Mesh& noisy)
+{
+  Grid_best best;
+  const std::vector<unsigned> counts = {1, 2, 3, 5, 10, 20, 50};
+  B::Face_mesh fm = B::make_face_mesh(noisy);
+  Mesh mesh = noisy;
+  const auto start = std::chrono::steady_clock::now();
+  for(unsigned it = 1; it <= counts.back(); ++it)
+  {
+    B::taubin_iteration(fm);
+    if(std::find(counts.begin(), counts.end(), it) != counts.end())
+    {
+      B::write_points(fm, mesh);
+      best.consider(ref, mesh, seconds_since(start), std::to_string(it) + " it");
+    }
+  }
+  return best.score(ref);
 }
 
 // smooth_shape's time step is a squared length: the grid is in squared mean edge
 // lengths, so that it means the same on every mesh. Its iterations are run one call
 // at a time (each call is one implicit step of the same flow).
-Score best_smooth_shape(const Mesh& clean, const Mesh& noisy, double edge)
+Score best_smooth_shape(const Reference& ref, const Mesh& noisy)
 {
-  Score best;
+  Grid_best best;
   for(double c : {0.03, 0.1, 0.3, 1., 3.})
   {
     Mesh mesh = noisy;
     const auto start = std::chrono::steady_clock::now();
-    for(unsigned it = 1; it <= iteration_counts.back(); ++it)
+    for(unsigned it = 1; it <= bilateral_counts.back(); ++it)
     {
-      PMP::smooth_shape(mesh, c * edge * edge, CGAL::parameters::number_of_iterations(1));
-      if(std::find(iteration_counts.begin(), iteration_counts.end(), it) != iteration_counts.end())
-        keep_best(best, score(clean, mesh, edge), "time " + format(c) + "e^2, " + std::to_string(it) + " it",
-                  seconds_since(start));
+      PMP::smooth_shape(mesh, c * ref.edge * ref.edge, CGAL::parameters::number_of_iterations(1));
+      if(std::find(bilateral_counts.begin(), bilateral_counts.end(), it) != bilateral_counts.end())
+        best.consider(ref, mesh, seconds_since(start), "time " + format(c) + "e^2, " + std::to_string(it) + " it");
     }
   }
-  return best;
+  return best.score(ref);
 }
 
-Score heat_diffusion_defaults(const Mesh& clean, const Mesh& noisy, double edge)
+struct Set_entry
 {
-  Mesh mesh = noisy;
-  const auto start = std::chrono::steady_clock::now();
-  HD::denoise_mesh(mesh);
-  Score s = score(clean, mesh, edge);
-  s.seconds = seconds_since(start);
-  s.setting = "defaults";
-  return s;
-}
+  std::string file, kind;
+};
 
-// denoise_mesh() over a small grid of its two main parameters: the displacement
-// limit (in multiples of the estimated noise) and the width of the normal weights
-// (0 = automatic).
-Score best_heat_diffusion(const Mesh& clean, const Mesh& noisy, double edge)
-{
-  Score best;
-  for(double limit : {0.8, 1.1, 1.5})
-    for(double normal_sigma : {0., 0.3, 0.5})
-    {
-      Mesh mesh = noisy;
-      const auto start = std::chrono::steady_clock::now();
-      if(normal_sigma > 0)
-        HD::denoise_mesh(mesh, HD::parameters::combine(HD::parameters::displacement_limit(limit),
-                                                       HD::parameters::normal_sigma(normal_sigma)));
-      else
-        HD::denoise_mesh(mesh, HD::parameters::displacement_limit(limit));
-      keep_best(best, score(clean, mesh, edge),
-                "limit " + format(limit) + ", normal_sigma " + (normal_sigma > 0 ? format(normal_sigma) : "auto"),
-                seconds_since(start));
-    }
-  return best;
-}
+const std::vector<Set_entry> full_set = {
+    {"fandisk.off", "CAD, creases"},      {"anchor_dense.off", "CAD, creases"}, {"turbine.off", "CAD, creases"},
+    {"blade.off", "CAD, needles"},        {"anchor.off", "CAD, needles"},       {"rotor_small.off", "CAD, needles"},
+    {"elephant.off", "organic"},          {"armadillo.off", "organic"},         {"bunny00.off", "organic"}};
 
-// The paper's pipeline (Denoising_method::signature_diffusion) with its defaults, with
-// the spectral kernel (the paper's) or with the local kernel (the default).
-Score heat_diffusion_signature(const Mesh& clean, const Mesh& noisy, double edge, HD::Heat_kernel_method kernel)
-{
-  Mesh mesh = noisy;
-  const auto start = std::chrono::steady_clock::now();
-  HD::denoise_mesh(mesh, HD::parameters::combine(
-                             HD::parameters::denoising_method(HD::Denoising_method::signature_diffusion),
-                             HD::parameters::kernel_method(kernel)));
-  Score s = score(clean, mesh, edge);
-  s.seconds = seconds_since(start);
-  s.setting = "defaults";
-  return s;
-}
-
-// The reconstruction of the signature diffusion (default iterations and anchors) with the
-// clean mesh's Normal Signature and normals as targets: an upper bound of what a
-// better diffusion of the signature could reach.
-Score heat_diffusion_oracle(const Mesh& clean, const Mesh& noisy, double edge)
-{
-  Mesh mesh = noisy;
-  auto signature = mesh.add_property_map<Vertex, double>("v:clean_ns").first;
-  auto normals = mesh.add_property_map<Vertex, Vector_3>("v:clean_normal").first;
-  const HD::Normal_controlled_coordinates<Mesh> ncc(clean);
-  for(auto v : clean.vertices())
-  {
-    signature[v] = ncc.normal_signature(v);
-    normals[v] = ncc.normal(v);
-  }
-  for(int it = 0; it < 2; ++it)
-    HD::reconstruct_from_normal_signature(
-        mesh, signature,
-        HD::parameters::combine(CGAL::parameters::vertex_normal_map(normals), HD::parameters::anchor_weight(0.7)));
-  Score s = score(clean, mesh, edge);
-  s.setting = "clean NS";
-  return s;
-}
+const std::vector<Set_entry> quick_set = {
+    {"fandisk.off", "CAD, creases"}, {"anchor.off", "CAD, needles"}, {"elephant.off", "organic"}};
 
 } // namespace
 
 int main(int argc, char** argv)
 {
-  std::vector<std::string> files;
+  bool quick = false, signature = false, normal_only = false;
+  std::vector<double> noises;
+  std::vector<Set_entry> set;
   for(int i = 1; i < argc; ++i)
-    files.push_back(argv[i]);
-  if(files.empty())
-    for(const char* name : {"fandisk.off", "elephant.off", "armadillo.off"})
-      files.push_back(std::string(CGAL_HEAT_DIFFUSION_DATA_DIR) + "/" + name);
-
-  std::cout << "| mesh | noise | noisy MAD / RMS | denoise_mesh (defaults) | denoise_mesh (best of grid) "
-               "| smooth_shape (best of grid) | bilateral (best of grid) | signature diffusion, spectral kernel "
-               "| signature diffusion, local kernel (its default) | NS oracle |\n"
-            << "|---|---|---|---|---|---|---|---|---|---|\n";
-  for(const std::string& file : files)
   {
-    Mesh clean;
-    if(!CGAL::IO::read_polygon_mesh(file, clean) || !CGAL::is_triangle_mesh(clean))
+    if(std::strcmp(argv[i], "--quick") == 0)
+      quick = true;
+    else if(std::strcmp(argv[i], "--signature") == 0)
+      signature = true;
+    else if(std::strcmp(argv[i], "--normal-only") == 0)
+      normal_only = true;
+    else if(std::strcmp(argv[i], "--noise") == 0 && i + 1 < argc)
+      noises.push_back(std::stod(argv[++i]));
+    else if(argv[i][0] == '-')
     {
-      std::cerr << "cannot read the triangle mesh " << file << std::endl;
+      std::cerr << "unknown option " << argv[i] << "\n";
       return EXIT_FAILURE;
     }
-    const double edge = test_support::mean_edge_length(clean);
-    const std::string name = file.substr(file.find_last_of('/') + 1) + " (" +
-                             std::to_string(clean.number_of_vertices()) + ")";
-    for(double noise : {0.1, 0.2, 0.3, 0.5})
-    {
-      const Mesh noisy = noisy_copy(clean, noise, 5);
-      const Score input = score(clean, noisy, edge);
-      auto cell = [](const Score& s, bool with_setting) {
-        std::string text = format(s.mad) + " / " + format(s.rms, 2);
-        if(with_setting)
-          text += " (" + s.setting + ", " + format(s.seconds, 2) + " s)";
-        return text;
-      };
-      std::cout << "| " << name << " | " << noise << " | " << cell(input, false) << " | "
-                << cell(heat_diffusion_defaults(clean, noisy, edge), true) << " | "
-                << cell(best_heat_diffusion(clean, noisy, edge), true) << " | "
-                << cell(best_smooth_shape(clean, noisy, edge), true) << " | "
-                << cell(best_bilateral(clean, noisy, edge), true) << " | "
-                << cell(heat_diffusion_signature(clean, noisy, edge, HD::Heat_kernel_method::spectral), true) << " | "
-                << cell(heat_diffusion_signature(clean, noisy, edge, HD::Heat_kernel_method::local), true) << " | "
-                << cell(heat_diffusion_oracle(clean, noisy, edge), false) << " |" << std::endl;
-    }
+    else
+      set.push_back({argv[i], "given"});
   }
-  std::cout << "\nMAD in degrees / RMS vertex error in mean edge lengths; noise in mean edge lengths "
-               "(Gaussian, along the normals, seed 5). Times are those of the chosen setting.\n";
+  if(set.empty())
+    set = quick ? quick_set : full_set;
+  if(noises.empty())
+    noises = quick ? std::vector<double>{0.3, 0.5} : std::vector<double>{0.1, 0.2, 0.3, 0.5};
+  if(quick)
+    normal_only = true;
+
+  const std::vector<std::string> methods = {"denoise_mesh", "GNF", "BNF", "bilateral (tuned)", "Taubin (tuned)",
+                                            "smooth_shape (tuned)", "signature diffusion"};
+  std::map<std::string, std::vector<double> > mads;
+  std::vector<std::string> losing_rows;
+
+  std::cout << "| mesh | kind | noise | direction | method | MAD | RMS | volume % | flipped | new SI | time s | setting |\n"
+            << "|---|---|---|---|---|---|---|---|---|---|---|---|\n";
+  for(const Set_entry& entry : set)
+  {
+    const std::string path =
+        entry.file.find('/') == std::string::npos ? std::string(CGAL_HEAT_DIFFUSION_DATA_DIR) + "/" + entry.file : entry.file;
+    Reference ref;
+    if(!CGAL::IO::read_polygon_mesh(path, ref.clean) || !CGAL::is_triangle_mesh(ref.clean) ||
+       ref.clean.number_of_faces() == 0)
+    {
+      std::cerr << "cannot read the triangle mesh " << path << std::endl;
+      return EXIT_FAILURE;
+    }
+    ref.edge = test_support::mean_edge_length(ref.clean);
+    for(Face f : ref.clean.faces())
+      ref.normals.push_back(PMP::compute_face_normal(f, ref.clean));
+    ref.closed = CGAL::is_closed(ref.clean);
+    if(ref.closed)
+      ref.volume = PMP::volume(ref.clean);
+    ref.intersections = count_self_intersections(ref.clean);
+    const std::string name = path.substr(path.find_last_of('/') + 1) + " (" +
+                             std::to_string(ref.clean.number_of_vertices()) + ")";
+    for(double noise : noises)
+      for(int direction = 0; direction < (normal_only ? 1 : 2); ++direction)
+      {
+        Mesh noisy = ref.clean;
+        if(direction == 0)
+          test_support::add_normal_noise(noisy, noise, 5);
+        else
+          test_support::add_random_direction_noise(noisy, noise, 6);
+        const std::string row = "| " + name + " | " + entry.kind + " | " + format(noise) + " | " +
+                                (direction == 0 ? "normal" : "random") + " | ";
+        std::vector<Score> scores;
+        scores.push_back(full_score(ref, noisy, 0, "input"));
+        scores.push_back(run_once(ref, noisy, [](Mesh& m) { HD::denoise_mesh(m); }, "defaults"));
+        scores.push_back(run_once(ref, noisy, [](Mesh& m) { B::guided_normal_filtering(m); }, "paper's defaults"));
+        scores.push_back(run_once(ref, noisy, [](Mesh& m) { B::bilateral_normal_filtering(m); }, "paper's defaults"));
+        scores.push_back(best_bilateral(ref, noisy));
+        scores.push_back(best_taubin(ref, noisy));
+        scores.push_back(best_smooth_shape(ref, noisy));
+        if(signature)
+          scores.push_back(run_once(ref, noisy, [](Mesh& m) {
+            HD::denoise_mesh(m, HD::parameters::denoising_method(HD::Denoising_method::signature_diffusion));
+          }, "defaults"));
+        double best_baseline = std::numeric_limits<double>::infinity();
+        for(std::size_t k = 0; k < scores.size(); ++k)
+        {
+          const Score& s = scores[k];
+          const std::string method = k == 0 ? "noisy input" : methods[k - 1];
+          if(k >= 2 && k <= 6)
+            best_baseline = (std::min)(best_baseline, s.mad);
+          if(k >= 1)
+            mads[method].push_back(s.mad);
+          std::cout << row << method << " | " << format(s.mad) << " | " << format(s.rms, 2) << " | "
+                    << (ref.closed ? format(s.volume_change, 2) : std::string("open")) << " | " << s.flipped << " | "
+                    << s.new_intersections << " | " << format(s.seconds, 2) << " | " << s.setting << " |\n";
+        }
+        if(scores[1].mad > 1.1 * best_baseline)
+          losing_rows.push_back(name + ", noise " + format(noise) + (direction == 0 ? " normal" : " random") +
+                                ": " + format(scores[1].mad) + " against " + format(best_baseline));
+        std::cout << std::flush;
+      }
+  }
+  std::cout << "\nMAD in degrees; RMS vertex error in mean edge lengths; volume change in percent of the clean "
+               "mesh's (closed meshes); flipped: faces more than 90 degrees from the clean normal; new SI: "
+               "intersecting face pairs beyond those of the clean mesh. Noise in mean edge lengths, Gaussian, "
+               "along the normals (seed 5) or in random directions (seed 6).\n\nMean MAD over "
+            << mads["denoise_mesh"].size() << " rows:\n";
+  for(const std::string& method : methods)
+    if(!mads[method].empty())
+    {
+      double sum = 0;
+      for(double m : mads[method])
+        sum += m;
+      std::cout << "  " << method << ": " << format(sum / double(mads[method].size()), 4) << "\n";
+    }
+  std::cout << "Rows where denoise_mesh is more than 10 % above the best baseline: " << losing_rows.size() << "\n";
+  for(const std::string& row : losing_rows)
+    std::cout << "  " << row << "\n";
   return EXIT_SUCCESS;
 }

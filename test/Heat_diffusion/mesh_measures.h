@@ -45,6 +45,29 @@ void add_normal_noise(Mesh& mesh, double relative_sigma, unsigned seed)
   mesh.remove_property_map(normals);
 }
 
+// Moves every vertex by Gaussian noise of standard deviation `relative_sigma` times
+// the mean edge length along a direction drawn uniformly on the sphere (seeded): noise
+// that also moves vertices within the surface, which distorts the triangles.
+template <typename Mesh>
+void add_random_direction_noise(Mesh& mesh, double relative_sigma, unsigned seed)
+{
+  typedef typename CGAL::Kernel_traits<typename Mesh::Point>::Kernel K;
+  const double sigma = relative_sigma * mean_edge_length(mesh);
+  std::mt19937 generator(seed);
+  std::normal_distribution<double> gaussian(0., 1.);
+  for(auto v : mesh.vertices())
+  {
+    typename K::Vector_3 direction(0, 0, 0);
+    double length = 0;
+    while(!(length > 1e-6))
+    {
+      direction = typename K::Vector_3(gaussian(generator), gaussian(generator), gaussian(generator));
+      length = std::sqrt(CGAL::to_double(direction.squared_length()));
+    }
+    mesh.point(v) = mesh.point(v) + (sigma * gaussian(generator) / length) * direction;
+  }
+}
+
 // The 2-ring of every vertex of a Surface_mesh, by index, without the vertex itself.
 template <typename Mesh>
 std::vector<std::set<std::size_t> > two_rings(const Mesh& mesh)

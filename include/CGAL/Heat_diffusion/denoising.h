@@ -9,6 +9,8 @@
 #include <CGAL/Heat_diffusion/Anisotropic_heat_diffusion.h>
 #include <CGAL/Heat_diffusion/parameters.h>
 #include <CGAL/Heat_diffusion/reconstruction.h>
+#include <CGAL/Heat_diffusion/internal/Denoising/normal_filtering.h>
+#include <CGAL/Heat_diffusion/internal/Denoising/signature_normals.h>
 
 #include <CGAL/Dynamic_property_map.h>
 #include <CGAL/boost/graph/named_params_helper.h>
@@ -33,9 +35,8 @@ enum class Denoising_method
 {
   /// The default: anisotropic diffusion of the face normals, whose edge weights
   /// are those of eq. 10 with the normals in place of the NCC, alternated with
-  /// vertex updates that fit the faces to the diffused normals, for as long as the
-  /// vertices have moved less than the noise level estimated from the Normal
-  /// Signature (see `denoise_mesh()`).
+  /// vertex updates that fit the faces to the diffused normals; the noise level, the
+  /// weights and the stop adapt to the mesh (see `denoise_mesh()`).
   normal_filtering,
   /// The paper's pipeline (eq. 22-23): the Normal Signature diffused with the
   /// edge-weighted heat kernel, the normals updated, the vertices reconstructed by
@@ -45,206 +46,6 @@ enum class Denoising_method
 
 // The named parameters denoising_method, normal_sigma and displacement_limit are in parameters.h.
 
-/// \cond SKIP_IN_MANUAL
-namespace internal {
-
-// The normal update of eq. 22, made robust. The paper's
-// n'_i = sum_j s_j n_j / sum_j s_j divides by a sum that vanishes wherever the
-// signature changes sign across the ring (every noisy flat region), and flips the
-// normal where the sum is negative. The package weights the normals of the closed
-// one-ring {i} and N(i) by |s_j| instead: a convex combination of unit normals with
-// non-negative weights, which stays inside the cone of the ring's normals and never
-// divides by a signed sum. A ring whose weights all vanish, or whose weighted normals
-// cancel, keeps the current normal.
-inline std::vector<Eigen::Vector3d> signature_weighted_normals(const Indexed_mesh& mesh,
-                                                               const std::vector<Eigen::Vector3d>& normals,
-                                                               const Eigen::VectorXd& signature)
-{
-  const std::size_t n = mesh.number_of_vertices();
-  std::vector<Eigen::Vector3d> result(n);
-  for(std::size_t i = 0; i < n; ++i)
-  {
-    double total_weight = std::abs(signature[Eigen::Index(i)]);
-    Eigen::Vector3d sum = total_weight * normals[i];
-    for(std::size_t k = mesh.fan_begin[i]; k < mesh.fan_begin[i + 1]; ++k)
-    {
-      const std::size_t j = mesh.fan[k];
-      const double weight = std::abs(signature[Eigen::Index(j)]);
-      sum += weight * normals[j];
-      total_weight += weight;
-    }
-    // The sum of unit vectors weighted by w_j has length at most sum_j w_j; a tenth
-    // of a percent of that means the normals nearly cancel (a spike).
-    const double length = sum.norm();
-    result[i] = length > 1e-3 * total_weight && length > 0 ? Eigen::Vector3d(sum / length) : normals[i];
-  }
-  return result;
-}
-
-// The noise level of a mesh, estimated from its Normal Signature. h_i = s_i sqrt(a_i)
-// is the height of v_i above the NCC-weighted average of its neighbours, along n_i.
-// On a smooth surface h varies slowly, so h_i - sum_j omega_ij h_j is small, while
-// independent noise of standard deviation e along the normals makes it about e (the
-// ratio measured on fandisk, elephant and armadillo with 0.1 to 0.5 mean edge length
-// of noise: 0.6 to 1.2, lower for stronger noise). The median over interior vertices
-// is robust to creases and corners. In the normalised frame of `mesh`.
-inline double estimated_noise_level(const Indexed_mesh& mesh, const Ncc_data& data)
-{
-  const std::size_t n = mesh.number_of_vertices();
-  std::vector<double> height(n), residual;
-  for(std::size_t i = 0; i < n; ++i)
-    height[i] = data.signature[i] * std::sqrt(data.areas[i]);
-  residual.reserve(n);
-  for(std::size_t i = 0; i < n; ++i)
-  {
-    if(!mesh.fan_is_closed[i])
-      continue;
-    double r = height[i];
-    for(std::size_t k = mesh.fan_begin[i]; k < mesh.fan_begin[i + 1]; ++k)
-      r -= data.weights[k] * height[mesh.fan[k]];
-    if(std::isfinite(r))
-      residual.push_back(std::abs(r));
-  }
-  if(residual.empty())
-    return 0.;
-  std::nth_element(residual.begin(), residual.begin() + std::ptrdiff_t(residual.size() / 2), residual.end());
-  return residual[residual.size() / 2];
-}
-
-// Face normals, areas and centroids of `points` on the triangles of `mesh`.
-inline void face_geometry(const Indexed_mesh& mesh, const std::vector<Eigen::Vector3d>& points,
-                          std::vector<Eigen::Vector3d>& normals, std::vector<double>& areas,
-                          std::vector<Eigen::Vector3d>& centroids)
-{
-  const std::size_t m = mesh.triangles.size();
-  normals.resize(m);
-  areas.resize(m);
-  centroids.resize(m);
-  for(std::size_t f = 0; f < m; ++f)
-  {
-    const auto& t = mesh.triangles[f];
-    const Eigen::Vector3d cross = (points[t[1]] - points[t[0]]).cross(points[t[2]] - points[t[0]]);
-    const double length = cross.norm();
-    areas[f] = 0.5 * length;
-    normals[f] = length > 0 ? Eigen::Vector3d(cross / length) : Eigen::Vector3d::Zero();
-    centroids[f] = (points[t[0]] + points[t[1]] + points[t[2]]) / 3.;
-  }
-}
-
-// The faces around each vertex, and the faces that share a vertex with each face.
-struct Face_adjacency
-{
-  std::vector<std::size_t> vertex_faces_begin, vertex_faces;
-  std::vector<std::size_t> face_faces_begin, face_faces;
-  std::vector<std::pair<std::size_t, std::size_t> > edge_adjacent_faces;
-};
-
-inline Face_adjacency make_face_adjacency(const Indexed_mesh& mesh)
-{
-  const std::size_t n = mesh.number_of_vertices(), m = mesh.triangles.size();
-  Face_adjacency a;
-  a.vertex_faces_begin.assign(n + 1, 0);
-  for(const auto& t : mesh.triangles)
-    for(std::size_t v : t)
-      ++a.vertex_faces_begin[v + 1];
-  for(std::size_t i = 0; i < n; ++i)
-    a.vertex_faces_begin[i + 1] += a.vertex_faces_begin[i];
-  a.vertex_faces.resize(a.vertex_faces_begin[n]);
-  std::vector<std::size_t> fill(a.vertex_faces_begin.begin(), a.vertex_faces_begin.end() - 1);
-  for(std::size_t f = 0; f < m; ++f)
-    for(std::size_t v : mesh.triangles[f])
-      a.vertex_faces[fill[v]++] = f;
-
-  a.face_faces_begin.assign(1, 0);
-  std::vector<std::size_t> ring;
-  for(std::size_t f = 0; f < m; ++f)
-  {
-    ring.clear();
-    for(std::size_t v : mesh.triangles[f])
-      for(std::size_t k = a.vertex_faces_begin[v]; k < a.vertex_faces_begin[v + 1]; ++k)
-        if(a.vertex_faces[k] != f)
-          ring.push_back(a.vertex_faces[k]);
-    std::sort(ring.begin(), ring.end());
-    for(std::size_t k = 0; k < ring.size();)
-    {
-      std::size_t l = k;
-      while(l < ring.size() && ring[l] == ring[k])
-        ++l;
-      a.face_faces.push_back(ring[k]);
-      if(l - k >= 2 && ring[k] > f)  // two shared vertices: an edge
-        a.edge_adjacent_faces.emplace_back(f, ring[k]);
-      k = l;
-    }
-    a.face_faces_begin.push_back(a.face_faces.size());
-  }
-  return a;
-}
-
-// One step of the anisotropic diffusion of the face normals:
-// n_f <- normalise(sum_{g in {f} u R(f)} a_g exp(-|c_f - c_g|^2 / 2 sigma_c^2)
-//                                          exp(-|n_f - n_g|^2 / 2 sigma_n^2) n_g),
-// R(f) the faces sharing a vertex with f: the edge weights of eq. 10, with the
-// normals in place of the NCC, times a spatial Gaussian.
-// `next` is scratch space.
-inline void diffuse_face_normals(const Face_adjacency& adjacency, const std::vector<double>& areas,
-                                 const std::vector<Eigen::Vector3d>& centroids, double sigma_c, double sigma_n,
-                                 std::vector<Eigen::Vector3d>& normals, std::vector<Eigen::Vector3d>& next)
-{
-  const std::size_t m = normals.size();
-  next.resize(m);
-  const double spatial = 1. / (2. * sigma_c * sigma_c), range = 1. / (2. * sigma_n * sigma_n);
-  parallel_for(m, [&](std::size_t f) {
-    Eigen::Vector3d sum = areas[f] * normals[f];
-    for(std::size_t k = adjacency.face_faces_begin[f]; k < adjacency.face_faces_begin[f + 1]; ++k)
-    {
-      const std::size_t g = adjacency.face_faces[k];
-      sum += areas[g] * std::exp(-(centroids[f] - centroids[g]).squaredNorm() * spatial -
-                                 (normals[f] - normals[g]).squaredNorm() * range) *
-             normals[g];
-    }
-    const double length = sum.norm();
-    next[f] = length > 0 && std::isfinite(length) ? Eigen::Vector3d(sum / length) : normals[f];
-  });
-  normals.swap(next);
-}
-
-// Vertex update for given face normals (Sun et al. 2007): Jacobi steps of the fit
-// of each face's plane to its target normal,
-// v_i <- v_i + (1/|F_i|) sum_{f in F_i} n_f n_f^T (c_f - v_i).
-// `centroids` must be the face centroids of `points` on entry (they are overwritten:
-// each step needs those of its own points); `next` is scratch space.
-inline void fit_vertices_to_normals(const Indexed_mesh& mesh, const Face_adjacency& adjacency,
-                                    const std::vector<Eigen::Vector3d>& face_normals, std::size_t steps,
-                                    std::vector<Eigen::Vector3d>& points, std::vector<Eigen::Vector3d>& centroids,
-                                    std::vector<Eigen::Vector3d>& next)
-{
-  const std::size_t n = points.size();
-  next.resize(n);
-  for(std::size_t step = 0; step < steps; ++step)
-  {
-    if(step > 0)
-      for(std::size_t f = 0; f < mesh.triangles.size(); ++f)
-      {
-        const auto& t = mesh.triangles[f];
-        centroids[f] = (points[t[0]] + points[t[1]] + points[t[2]]) / 3.;
-      }
-    parallel_for(n, [&](std::size_t i) {
-      Eigen::Vector3d move = Eigen::Vector3d::Zero();
-      const std::size_t begin = adjacency.vertex_faces_begin[i], end = adjacency.vertex_faces_begin[i + 1];
-      for(std::size_t k = begin; k < end; ++k)
-      {
-        const std::size_t f = adjacency.vertex_faces[k];
-        move += face_normals[f] * face_normals[f].dot(centroids[f] - points[i]);
-      }
-      next[i] = end > begin ? Eigen::Vector3d(points[i] + move / double(end - begin)) : points[i];
-    });
-    points.swap(next);
-  }
-}
-
-} // namespace internal
-/// \endcond
-
 /// \ingroup PkgHeatDiffusionApplications
 /// Denoises the triangle mesh `tm` in place, keeping its connectivity. Two algorithms
 /// are available (named parameter `denoising_method`).
@@ -253,28 +54,31 @@ inline void fit_vertices_to_normals(const Indexed_mesh& mesh, const Face_adjacen
 /// (section 7, eq. 22-23) diffuses the Normal Signature and reconstructs the vertices
 /// from it; on a noisy mesh the diffused signature is too poor a target (see the user
 /// manual), so the default diffuses the <em>normals</em> with the anisotropic edge weights
-/// of eq. 10 instead, and fits the vertices to them:
-///  1. the noise level \f$ \hat\varepsilon \f$ of the input is estimated from its Normal
-///     Signature: \f$ h_i = s_i \sqrt{a_i} \f$ is the height of \f$ v_i \f$ above the NCC-weighted
-///     average of its neighbours; \f$ \hat\varepsilon \f$ is the median over interior vertices of
-///     \f$ |h_i - \sum_j \omega_{ij} h_j| \f$ (about the standard deviation of noise along the
-///     normals: 0.6 to 1.2 times it on fandisk, elephant and armadillo with 0.1 to 0.5
-///     mean edge length of noise);
-///  2. each iteration diffuses the face normals `number_of_steps` times,
-///     \f$ n_f \leftarrow \sum_{g} a_g\, e^{-|c_f - c_g|^2/2\sigma_c^2}\, e^{-|n_f - n_g|^2/2\sigma_n^2}\, n_g \f$
-///     (normalised) over f and the faces g sharing a vertex with f (\f$ a_g \f$ areas,
-///     \f$ c_g \f$ centroids, \f$ \sigma_c \f$ the mean distance between the centroids of
-///     adjacent faces, \f$ \sigma_n \f$ = `normal_sigma`): the weights of eq. 10 with
-///     normals in place of the NCC, which stop the diffusion across creases;
-///  3. then moves the vertices so that the faces fit the diffused normals (five Jacobi
-///     steps of \f$ v_i \leftarrow v_i + \frac{1}{|F_i|}\sum_{f \ni v_i} n_f n_f^T (c_f - v_i) \f$,
+/// of eq. 10 instead, and fits the vertices to them. Every length it uses is local to a
+/// vertex or a face, so that meshes of very uneven triangles are treated like even ones:
+///  1. the noise level \f$ \hat\varepsilon \f$ is the median over interior vertices of the
+///     distance of \f$ v_i \f$, along its area-weighted normal, from the mean of its
+///     neighbours, divided by \f$ 0.6745 \sqrt{1 + 1/d_i} \f$ (\f$ d_i \f$ the degree): about
+///     the standard deviation of Gaussian noise along the normals;
+///  2. an iteration diffuses the face normals `number_of_steps` times,
+///     \f$ n_f \leftarrow \sum_{g} a_g\, e^{-|n_f - n_g|^2/2\sigma_n^2}\, n_g \f$
+///     (normalised) over f and the faces g sharing a vertex with f (\f$ a_g \f$ areas):
+///     the weights of eq. 10 with normals in place of the NCC, which stop the diffusion
+///     across creases; then moves the vertices so that the faces fit the diffused normals
+///     (five Jacobi steps of \f$ v_i \leftarrow v_i + \frac{1}{|F_i|}\sum_{f \ni v_i} n_f n_f^T (c_f - v_i) \f$,
 ///     the vertex update of Sun et al. 2007);
-///  4. and stops after `number_of_iterations` iterations, or as soon as the root mean
-///     square displacement of the vertices from the input reaches `displacement_limit`
-///     \f$ \times\, \hat\varepsilon \f$: a mesh should not be moved further than its noise.
-///     This stop matters on smooth meshes whose detail is at the scale of the edges,
-///     where the diffusion keeps removing shape; on meshes of flat parts and creases the
-///     iterations converge before.
+///  3. with \f$ \sigma_n = 0.45 \f$ (faces across a crease of 40 degrees or more weigh each
+///     other less than a third), the iterations run until the root mean square
+///     displacement of the vertices reaches `displacement_limit` \f$ \times\, \hat\varepsilon \f$;
+///  4. if the result is then piecewise flat (its own noise level, measured as in 1, is
+///     below 0.15 \f$ \hat\varepsilon \f$: CAD parts), the iterations go on, up to
+///     `number_of_iterations` or until the vertices stop moving: flat parts and sharp
+///     creases are the fixed point of the filter;
+///  5. otherwise the surface is curved: the range weights would freeze the noise into
+///     false creases, so the input is filtered again with isotropic weights
+///     (\f$ \sigma_n = \infty \f$) until the displacement of 3.
+/// A `normal_sigma` given by the user replaces 3 to 5 by iterations with that width until
+/// the displacement of 3. A mesh whose noise level is 0 is left unchanged.
 ///
 /// <b>`Denoising_method::signature_diffusion`: the paper's pipeline.</b> Each of the
 /// `number_of_iterations` iterations
@@ -298,8 +102,9 @@ inline void fit_vertices_to_normals(const Indexed_mesh& mesh, const Face_adjacen
 /// its corners.
 ///
 /// Every position stays finite. The defaults were chosen by measurement on CGAL's
-/// `fandisk.off`, `elephant.off` and `armadillo.off` with Gaussian noise along the
-/// normals of 0.1 to 0.5 mean edge length (see the user manual for the table).
+/// meshes (CAD parts with creases, CAD parts of needle triangles, organic shapes) with
+/// Gaussian noise of 0.1 to 0.5 mean edge length along the normals and in random
+/// directions (see the user manual for the table).
 ///
 /// @tparam TriangleMesh a model of `FaceListGraph` and `HalfedgeListGraph`
 /// @tparam NamedParameters a sequence of named parameters
@@ -316,22 +121,22 @@ inline void fit_vertices_to_normals(const Indexed_mesh& mesh, const Face_adjacen
 ///   \cgalParamNBegin{number_of_iterations}
 ///     \cgalParamDescription{the (largest) number of outer iterations; 0 leaves `tm` unchanged}
 ///     \cgalParamType{`unsigned int` (\cgal's own named parameter `CGAL::parameters::number_of_iterations`)}
-///     \cgalParamDefault{`100` (normal filtering; the displacement limit usually stops it before) or `2` (signature diffusion)}
+///     \cgalParamDefault{`40` (normal filtering; on curved surfaces the displacement limit stops it before) or `2` (signature diffusion)}
 ///   \cgalParamNEnd
 ///   \cgalParamNBegin{number_of_steps}
 ///     \cgalParamDescription{normal filtering: the number of diffusion steps of the face normals per iteration; signature diffusion: the number k of diffusion steps of the signature per iteration}
 ///     \cgalParamType{`std::size_t`}
-///     \cgalParamDefault{`2` (normal filtering) or `1` (signature diffusion)}
+///     \cgalParamDefault{`1`}
 ///   \cgalParamNEnd
 ///   \cgalParamNBegin{normal_sigma}
-///     \cgalParamDescription{normal filtering only: the width \f$ \sigma_n \f$ of the normal weights; smaller keeps more creases, and more noise}
+///     \cgalParamDescription{normal filtering only: the width \f$ \sigma_n \f$ of the normal weights, used for all iterations (see above); smaller keeps more creases, and more noise}
 ///     \cgalParamType{`double`, positive}
-///     \cgalParamDefault{\f$ \max(0.4,\ 1.6\,\hat\varepsilon / \bar e) \f$, \f$ \bar e \f$ the mean edge length: wider for noisier meshes}
+///     \cgalParamDefault{chosen by the algorithm (0.45, or infinite on curved surfaces)}
 ///   \cgalParamNEnd
 ///   \cgalParamNBegin{displacement_limit}
-///     \cgalParamDescription{normal filtering only: the iterations stop once the root mean square displacement from the input reaches this multiple of the estimated noise level; `std::numeric_limits<double>::infinity()` runs all of them}
+///     \cgalParamDescription{normal filtering only: the multiple of the estimated noise level that the root mean square displacement from the input must reach to end the crease-preserving phase and the isotropic filtering (see above); `std::numeric_limits<double>::infinity()` runs all the iterations}
 ///     \cgalParamType{`double`, positive}
-///     \cgalParamDefault{`1.1`}
+///     \cgalParamDefault{`1`}
 ///   \cgalParamNEnd
 ///   \cgalParamNBegin{sigma}
 ///     \cgalParamDescription{signature diffusion only: the width of the edge weights of the heat kernel; values much smaller than the noise of the NCC make the eigen solve fail (see above)}
@@ -392,10 +197,9 @@ inline void fit_vertices_to_normals(const Indexed_mesh& mesh, const Face_adjacen
 ///   diffusion), or if the `progress_callback` cancels.
 ///
 /// Complexity: normal filtering: linear in the size of `tm` per iteration (parallel
-/// with TBB); with the defaults, 3 to 42 iterations on the meshes of the user manual's
-/// table. Measured in all on a shared 2-core machine, depending on the noise (0.1 to 0.5
-/// mean edge length) and the load: below 0.05 s on the 2775 vertices of `elephant.off`, 0.03 to 0.5 s on the 6475 of
-/// `fandisk.off`, 0.1 to 0.5 s on the 26002 of `armadillo.off`.
+/// with TBB), at most `number_of_iterations` iterations plus those of the isotropic
+/// filtering on curved surfaces (see `benchmark_denoising` for times measured against
+/// the published filters).
 /// Signature diffusion: per iteration, one edge-weighted heat kernel (a sparse Cholesky
 /// factorisation and a Lanczos iteration of \f$ O(n m^2) \f$ dense work: most of the time),
 /// the operator \f$ A_t \f$ (linear in n), k sparse products and one sparse Cholesky
@@ -420,10 +224,10 @@ void denoise_mesh(TriangleMesh& tm, const NamedParameters& np = parameters::defa
     internal::throw_invalid_input("denoise_mesh: unknown denoising_method");
   const bool filtering = method == Denoising_method::normal_filtering;
   const double iterations =
-      double(choose_parameter(get_parameter(np, CGAL::internal_np::number_of_iterations), filtering ? 100 : 2));
+      double(choose_parameter(get_parameter(np, CGAL::internal_np::number_of_iterations), filtering ? 40 : 2));
   const double sigma = choose_parameter(get_parameter(np, internal_np::sigma), 1.);
   const double time = choose_parameter(get_parameter(np, internal_np::time), 1.);
-  const double steps = double(choose_parameter(get_parameter(np, internal_np::number_of_steps), filtering ? 2 : 1));
+  const double steps = double(choose_parameter(get_parameter(np, internal_np::number_of_steps), 1));
   const double eigenpairs = double(choose_parameter(get_parameter(np, internal_np::number_of_eigenpairs), 150));
   const double anchor_weight = choose_parameter(get_parameter(np, internal_np::anchor_weight), 0.7);
   const Heat_kernel_method kernel_method = internal::resolve_kernel_method<NamedParameters>(
@@ -434,7 +238,7 @@ void denoise_mesh(TriangleMesh& tm, const NamedParameters& np = parameters::defa
   const auto coarse_vertex_count = choose_parameter(get_parameter(np, internal_np::coarse_vertex_count), -1);
   const double user_normal_sigma = choose_parameter(get_parameter(np, internal_np::normal_sigma), 0.);
   const bool automatic_normal_sigma = parameters::is_default_parameter<NamedParameters, internal_np::normal_sigma_t>::value;
-  const double displacement_limit = choose_parameter(get_parameter(np, internal_np::displacement_limit), 1.1);
+  const double displacement_limit = choose_parameter(get_parameter(np, internal_np::displacement_limit), 1.);
   const std::function<bool(double)> progress =
       choose_parameter(get_parameter(np, internal_np::progress_callback), std::function<bool(double)>());
   if(!(iterations >= 0) || !std::isfinite(iterations))
@@ -469,49 +273,19 @@ void denoise_mesh(TriangleMesh& tm, const NamedParameters& np = parameters::defa
 
   if(filtering)
   {
-    // All work in the normalised frame of the indexed mesh: every quantity below is
+    // All work in the normalised frame of the indexed mesh: every quantity is
     // invariant under rigid motions and uniform scaling.
     const Normal_controlled_coordinates<TriangleMesh, GeomTraits> ncc(tm, mesh_parameters);
-    const internal::Indexed_mesh& mesh = ncc.indexed_mesh();
-    const std::size_t n = mesh.number_of_vertices();
-    const double noise = internal::estimated_noise_level(mesh, ncc.data());
-    const internal::Face_adjacency adjacency = internal::make_face_adjacency(mesh);
-
-    std::vector<Eigen::Vector3d> points = mesh.points, face_normals, centroids, face_scratch, vertex_scratch;
-    std::vector<double> areas;
-    internal::face_geometry(mesh, points, face_normals, areas, centroids);
-    double centroid_distance = 0, edge_length = 0;
-    for(const auto& fg : adjacency.edge_adjacent_faces)
-      centroid_distance += (centroids[fg.first] - centroids[fg.second]).norm();
-    for(std::size_t i = 0; i < n; ++i)
-      for(std::size_t k = mesh.fan_begin[i]; k < mesh.fan_begin[i + 1]; ++k)
-        edge_length += (mesh.points[mesh.fan[k]] - mesh.points[i]).norm();
-    edge_length /= double(mesh.fan.size());
-    if(adjacency.edge_adjacent_faces.empty())
-      centroid_distance = edge_length;
-    else
-      centroid_distance /= double(adjacency.edge_adjacent_faces.size());
-    const double normal_sigma = automatic_normal_sigma ? (std::max)(0.4, 1.6 * noise / edge_length) : user_normal_sigma;
-
-    const internal::Progress reporter(progress);
-    for(std::size_t iteration = 0; iteration < std::size_t(iterations); ++iteration)
-    {
-      if(iteration > 0)  // (the geometry of the input is already there)
-        internal::face_geometry(mesh, points, face_normals, areas, centroids);
-      for(std::size_t step = 0; step < std::size_t(steps); ++step)
-        internal::diffuse_face_normals(adjacency, areas, centroids, centroid_distance, normal_sigma, face_normals,
-                                       face_scratch);
-      internal::fit_vertices_to_normals(mesh, adjacency, face_normals, 5, points, centroids, vertex_scratch);
-      double squares = 0;
-      for(std::size_t i = 0; i < n; ++i)
-        squares += (points[i] - mesh.points[i]).squaredNorm();
-      if(std::sqrt(squares / double(n)) >= displacement_limit * noise)
-        break;
-      reporter.report(double(iteration + 1) / iterations, "denoise_mesh");
-    }
+    internal::Normal_filtering_options options;
+    options.iterations = std::size_t(iterations);
+    options.steps = std::size_t(steps);
+    options.normal_sigma = automatic_normal_sigma ? 0. : user_normal_sigma;
+    options.displacement_limit = displacement_limit;
+    const std::vector<Eigen::Vector3d> points =
+        internal::filter_normals(ncc.indexed_mesh(), options, internal::Progress(progress));
     for(vertex_descriptor v : vertices(tm))
     {
-      const Eigen::Vector3d x = mesh.to_user_frame(points[ncc.vertex_index(v)]);
+      const Eigen::Vector3d x = ncc.indexed_mesh().to_user_frame(points[ncc.vertex_index(v)]);
       if(x.allFinite())
         put(vpm, v, Point_3(x.x(), x.y(), x.z()));
     }
