@@ -189,8 +189,8 @@ public:
     }
     else
     {
-      // Shares of the progress bar, from the stages' shares of the time at 100k-1.6M
-      // vertices: simplification 36-63 %, eigen solve 55-23 %, Rayleigh-Ritz 9-14 %.
+      // Shares of the progress bar, after the stages' shares of the time on large meshes:
+      // the simplification and the eigen solve take most of it, Rayleigh-Ritz the rest.
       const internal::Coarse_level level =
           internal::make_coarse_level(mesh, coarse_vertices_, progress.part(0., 0.5));
       coarse_vertices_ = level.mesh.number_of_vertices();

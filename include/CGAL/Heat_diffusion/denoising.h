@@ -203,8 +203,7 @@ enum class Denoising_method
 /// Signature diffusion: per iteration, one edge-weighted heat kernel (a sparse Cholesky
 /// factorisation and a Lanczos iteration of \f$ O(n m^2) \f$ dense work: most of the time),
 /// the operator \f$ A_t \f$ (linear in n), k sparse products and one sparse Cholesky
-/// factorisation of the reconstruction: 0.4 to 1.9 s per iteration on the 6475
-/// vertices of `fandisk.off`, 8 s on the 26002 of `armadillo.off`.
+/// factorisation of the reconstruction (the user manual gives measured times).
 template <typename TriangleMesh, typename NamedParameters = parameters::Default_named_parameters>
 void denoise_mesh(TriangleMesh& tm, const NamedParameters& np = parameters::default_values())
 {

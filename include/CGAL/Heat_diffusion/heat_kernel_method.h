@@ -27,9 +27,9 @@ enum class Heat_kernel_method
   /// rational approximation of the matrix exponential (three complex poles, one patch
   /// and one factorisation per cluster of 96 sources), with no eigenpairs and no
   /// truncation of the spectrum: relative error below \f$ 10^{-4} \f$ for t in [0.5, 4]
-  /// on CGAL's fandisk and armadillo, where building \f$ A_t \f$ this way is 5 to 16
-  /// times faster than the spectral path, eigen solve included (see the user manual). The right choice
-  /// for small t, where the truncated kernel is too flat.
+  /// on CGAL's fandisk and armadillo, where building \f$ A_t \f$ this way is faster than
+  /// the spectral path, eigen solve included (the user manual gives the measured times).
+  /// The right choice for small t, where the truncated kernel is too flat.
   local,
   /// The default: `spectral` when the eigenpairs are asked for (the named parameter
   /// `number_of_eigenpairs` or `coarse_vertex_count` is given, or

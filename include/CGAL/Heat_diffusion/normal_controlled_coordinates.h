@@ -145,8 +145,8 @@ public:
   /// The row of `v` in `operator_matrix()`: its index in the vertex index map if one
   /// was given; otherwise, for meshes of at least 100000 vertices, its rank along a
   /// Hilbert curve of the vertices (the memory-bound sparse products of the diffusion
-  /// then read nearly sequentially: one step was 4.6 times faster on a 1.6M-vertex
-  /// subdivided mesh), and its rank in `vertices(tm)` for smaller meshes (the mesh's
+  /// then read nearly sequentially; the user manual's Performance section gives the
+  /// gain), and its rank in `vertices(tm)` for smaller meshes (the mesh's
   /// own index when it has no removed elements).
   std::size_t vertex_index(vertex_descriptor v) const { return get(index_, v); }
 

@@ -32,13 +32,11 @@ namespace internal {
 // number of threads, since the groups are a fixed partition of the columns.
 //
 // Why not one compressed-row matrix: its rows are only known once every column is,
-// so the columns would be kept (all of them) and then scattered into it. At 1.66M
-// vertices (96M entries) that is twice 1.15 GB of new memory; the scattered writes
-// and the page faults of the second took 0.6 s with most of the memory free and 1.3
-// to 2.2 s with most of it in the page cache (2 cores). Here a group is written once,
-// next to where it was computed: the local kernel's peak at that size went from 3.39
-// to 2.38 GiB. The price is in the product: a row lies in about 3 groups, and a step
-// took 88 ms (79 for the group rows, 9 for the rows) against 68 ms in compressed rows.
+// so the columns would be kept (all of them) and then scattered into it: the matrix
+// held twice, and scattered writes with their page faults. Here a group is written
+// once, next to where it was computed, which lowers the peak memory by about a third
+// on large meshes. The price is in the product: a row lies in about 3 groups, so a
+// step is somewhat slower than in compressed rows (benchmark_local_kernel).
 class Column_group_matrix
 {
 public:

@@ -143,9 +143,8 @@ constexpr std::size_t spatial_order_threshold = 100000;
 // positions (CGAL::hilbert_sort, deterministic): neighbouring vertices then get close
 // indices, and the sparse products of the diffusion, which are memory-bound, read
 // the field nearly sequentially. A Loop-subdivided mesh numbers its new vertices edge
-// by edge, far from their neighbours: a diffusion step with a 3-ring operator on the
-// 416k-vertex subdivided armadillo took 100 ms in that order and 32 ms after
-// renumbering (one thread; benchmark_scale_curve --order). Returns false, and changes
+// by edge, far from their neighbours (benchmark_scale_curve --order measures a
+// diffusion step in both orders). Returns false, and changes
 // nothing, if a coordinate is not finite (make_indexed_mesh() reports it).
 template <typename TriangleMesh, typename VertexPointMap, typename VertexIndexMap>
 bool number_along_hilbert_curve(const TriangleMesh& tm, VertexPointMap vpm, VertexIndexMap index)

@@ -66,9 +66,8 @@ constexpr std::size_t prepass_factor = CGAL_HEAT_DIFFUSION_COARSE_PREPASS_FACTOR
 //
 // The proposals are computed in parallel, one slot per vertex, and listed in vertex
 // order, so the result does not depend on the number of threads. Applying them is
-// greedy and sequential, each collapse changing what the next may do: at 1.66M
-// vertices the rounds take 7.6 s on two threads, 9.8 s on one. `progress` follows the
-// vertices removed.
+// greedy and sequential, each collapse changing what the next may do. `progress`
+// follows the vertices removed.
 template <typename Mesh>
 void decimate_by_rounds(Mesh& mesh, std::size_t target_vertices, const Progress& progress)
 {
@@ -229,8 +228,8 @@ Coarse_level make_coarse_level(const Indexed_mesh& fine, std::size_t target_vert
   namespace SMS = CGAL::Surface_mesh_simplification;
   namespace PMP = CGAL::Polygon_mesh_processing;
 
-  // The shares of the stages in the time at 1.66M vertices: copy 12 %, rounds 62 %,
-  // Garland-Heckbert 12 %, prolongation 14 %.
+  // The progress bar's shares of the stages follow their shares of the time on large
+  // meshes, where the rounds take most of it.
   constexpr double copy_end = 0.1, rounds_end = 0.7, prolongation_begin = 0.85;
   progress.report(0., "the simplification of the coarse level");
   Mesh mesh;

@@ -118,7 +118,7 @@ public:
 };
 
 // Simplicial by default: the supernodal factorisation and solves go through BLAS, and
-// with Debian's reference BLAS they were slower (fandisk, m = 150: 0.45 s vs 0.36 s).
+// with Debian's reference BLAS they were slower.
 // Define to 1 when CHOLMOD is linked against an optimised BLAS.
 #ifndef CGAL_HEAT_DIFFUSION_CHOLMOD_SUPERNODAL
 #define CGAL_HEAT_DIFFUSION_CHOLMOD_SUPERNODAL 0
@@ -240,7 +240,7 @@ private:
 // y = R^T P phi and nu = 1 / (lambda - sigma). The eigenvalues nu are the same as in
 // shift-invert mode, so Lanczos converges identically, but the Krylov basis is now
 // Euclidean-orthonormal: Spectra's reorthogonalisation no longer needs B products
-// (5-6 per step in generalized mode, ~18% of the run time); one B product per
+// (5-6 per step in generalized mode); one B product per
 // application remains, for the same two triangular solves a K solve costs anyway.
 // Everything runs in the permuted numbering, so no permutation is applied per step.
 template <typename SparseMatrix>
@@ -265,8 +265,7 @@ public:
     m_tmp = x;
     m_factor.solve_upper_in_place(m_tmp.data(), 1);
     // Column-major on purpose: Eigen multi-threads a row-major product under OpenMP,
-    // and a fork/join per Lanczos step costs more than it saves on 2 cores (fandisk,
-    // m = 150, -fopenmp: 0.36 s -> 1.4-3.7 s with a row-major B).
+    // and a fork/join per Lanczos step costs more than it saves on few cores.
     y.noalias() = m_B * m_tmp;
     m_factor.solve_lower_in_place(y.data(), 1);
     if(m_on_application)

@@ -79,13 +79,11 @@ enum class Local_kernel_mass { consistent, lumped };
 // the patch, near its source. The forward substitution of a unit right-hand side fills
 // in only the source's ancestors in the elimination tree; with the sources ordered by
 // the postorder of their rows, the sources below a row are consecutive block columns,
-// and each row updates only those (a third of the full block's work on armadillo at
-// t = 1). The back substitution of a row needs only its ancestors: value() solves a
+// and each row updates only those (a fraction of the full block's work). The back substitution of a row needs only its ancestors: value() solves a
 // row, and the ancestors not solved yet, when it is first read, in the lanes_per_pass
-// block columns of the source's pass (the sources next to each other in the postorder).
-// On armadillo subdivided to 104k vertices at t = 1 the passes of 16 columns do 74 % of
-// the work of solving the rows read for all the columns at once (65 % with passes of 8;
-// those rows are 63 % of the patch), late in the elimination order. The heat balance needs no column in full: with
+// block columns of the source's pass (the sources next to each other in the postorder):
+// the rows read are a part of the patch, late in the elimination order, and a pass
+// solves them for its columns only. The heat balance needs no column in full: with
 // M_k = L_k D_k L_k^T (complex symmetric), 1^T B_P h_s = sum_k Re(u_k^T D_k^-1 y_ks),
 // where u_k = L_k^-1 B_P 1 is computed with the factor and y_ks = L_k^-1 (-a_k e_s) is
 // the forward solution.
@@ -99,9 +97,8 @@ enum class Local_kernel_mass { consistent, lumped };
 // little (|a_k / z_k| <= 3.23), so the rounding stays small: a column of A_t differs from
 // the one of double-precision substitutions by at most 2.8e-6 (relative L2, armadillo
 // subdivided to 104k vertices, t = 0.5 to 4), 36 times less than the tolerance, and a
-// heat balance by at most 4.9e-7 (104k and 416k). The local kernel took 13 % less time
-// (416k, t = 1), and passes of sixteen columns, which fill an AVX-512 register, 6 % less
-// again.
+// heat balance by at most 4.9e-7 (104k and 416k); and the substitutions are faster
+// (benchmark_local_kernel).
 //
 // Cost per cluster of c sources: a patch of p ~ (sqrt(c) + radius)^2 vertices, three
 // complex factorisations of it, and 3 c complex forward and back substitutions on part
@@ -202,11 +199,9 @@ public:
     initial_radius_ = (std::max)(radius_factor * std::sqrt(time * log_tolerance), reach_in_edges);
     // The edge lengths of diffusion_length() along the fans (the graph of L), for
     // Dijkstra, at most initial_radius_ / reach_in_edges: where the triangles are large,
-    // a ball of that radius still spans the reach of B^-1 e_j in edges. (Uncapped, on
-    // armadillo subdivided to 1.66M vertices at t = 1, the patches of 29 % of the
-    // clusters lost too much heat and 15,883 columns were computed again on enlarged
-    // patches; capped, 847 clusters and 887 columns, and the patch work took 6 % less
-    // CPU time.)
+    // a ball of that radius still spans the reach of B^-1 e_j in edges. (Uncapped, long
+    // edges make patches too small in edges: many more clusters lose too much heat and
+    // are computed again on enlarged patches.)
     const double longest_edge = initial_radius_ / reach_in_edges;
     edge_length_.resize(mesh.fan.size());
     for(std::size_t i = 0; i < n; ++i)
@@ -314,10 +309,9 @@ public:
   }
 
 private:
-  // (2.6 rather than 2.8: more columns fail the heat balance at t = 1, one cluster in
-  // five against one in seven, but the smaller patches win. CPU time on armadillo
-  // subdivided: 4 % less at t = 1 (416k vertices), 8 % at t = 2 and 11 % at t = 4 (104k);
-  // 2.4 took 19 % more at t = 1. Below t = 0.79, at the default tolerance, the radius is
+  // (Smaller patches fail the heat balance more often and are computed again; 2.6 is
+  // where the smaller patches' savings and the recomputations balance best, measured
+  // by benchmark_local_kernel. Below t = 0.79, at the default tolerance, the radius is
   // the reach of B^-1 e_j.)
   static constexpr double radius_factor = 2.6;
 
@@ -488,8 +482,8 @@ private:
   static constexpr std::size_t number_of_poles = 3;  // exponential_poles().size()
   // The block columns that the back substitution solves together, a pass (summed up in
   // registers: one vector of sixteen floats, or two of eight), and the multiple to which
-  // a block row is rounded up. (Passes of eight took 6 % more time on armadillo at 416k;
-  // in double precision sixteen had been slower than eight.)
+  // a block row is rounded up. (Sixteen single-precision lanes fill an AVX-512 register;
+  // passes of eight were measured slower.)
   static constexpr std::size_t lanes_per_pass = 16;
 
   // Numeric LDL^T of P (t L_P + z_k B_P) P^T for the poles z_k together (they share the
@@ -750,9 +744,8 @@ private:
   // Row j of pole m in back_substitution(), in the block columns [offset, offset + lanes)
   // (whole passes), with 1 / d_j = gr + i gi: a pass at a time, summed up in registers
   // over the factor column and written once, in lanes_per_pass / width vectors of `width`
-  // floats. (With the vectors of the factorisation and of the substitutions, the local
-  // kernel on armadillo at 416k took 1.2 times less time than with plain loops in the
-  // same clones.) Always inlined, so that it is compiled for the clone of
+  // floats (faster than the plain loops in the same clones, which the compiler
+  // vectorises less well). Always inlined, so that it is compiled for the clone of
   // back_substitution() that calls it.
   template <typename Vector>
   __attribute__((always_inline)) static inline void back_substitute_in_vectors(Workspace& w, std::size_t j,

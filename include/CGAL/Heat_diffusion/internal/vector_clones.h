@@ -32,11 +32,11 @@ namespace internal {
 // Vectors (GCC's and Clang's vector extensions) of 256 bits where they fit one AVX
 // register: in the x86-64-v3 and v4 clones, or when the compiler targets AVX; and of 512
 // bits where they fit an AVX-512 register. The factorisation updates the poles of a row
-// at once in four doubles (0.84 of the time on armadillo at 416k), and the substitutions,
+// at once in four doubles (most of the factorisation's time), and the substitutions,
 // in single precision, run over whole passes in vectors of eight or sixteen floats.
 // Elsewhere (other compilers, a baseline build, the baseline clone, or
 // CGAL_HEAT_DIFFUSION_NO_VECTOR_EXTENSIONS), plain loops that the compiler vectorises
-// itself: GCC's SSE2 code for the vectors was 2.4 times slower. (The vectors are passed
+// itself: GCC's SSE2 code for the vectors was much slower. (The vectors are passed
 // by reference: by value, they would change the calling convention between the baseline
 // code and its clone.)
 #if defined(__GNUC__) && (defined(__AVX__) || defined(CGAL_HEAT_DIFFUSION_HAS_VECTOR_CLONES)) && \
