@@ -8,14 +8,13 @@
 
 #include <CGAL/Heat_diffusion/Edge_weighted_heat_kernel.h>
 #include <CGAL/Heat_diffusion/heat_kernel_method.h>
-#include <CGAL/Heat_diffusion/internal/Column_group_matrix.h>
+#include <CGAL/Heat_diffusion/internal/diffusion_operator.h>
 #include <CGAL/Heat_diffusion/internal/errors.h>
 #include <CGAL/Heat_diffusion/internal/heat_operators.h>
 #include <CGAL/Heat_diffusion/internal/heat_regions.h>
 #include <CGAL/Heat_diffusion/internal/kernel_columns.h>
 #include <CGAL/Heat_diffusion/internal/local_heat_kernel.h>
 #include <CGAL/Heat_diffusion/internal/progress.h>
-#include <CGAL/Heat_diffusion/internal/symmetric_balancing.h>
 #include <CGAL/Heat_diffusion/normal_controlled_coordinates.h>
 #include <CGAL/Heat_diffusion/operator_normalization.h>
 #include <CGAL/Heat_diffusion/parameters.h>
@@ -272,12 +271,12 @@ public:
   /// compressed-column copy is made on the first call (thread-safe) and kept.
   const Sparse_matrix& operator_matrix() const
   {
-    std::call_once(column_major_->once, [this] { column_major_->matrix = make_operator_matrix(); });
+    std::call_once(column_major_->once, [this] { column_major_->matrix = diffusion_operator_.column_major(); });
     return column_major_->matrix;
   }
   /// The number of products with the kernel matrix that its balancing took (0 with
   /// `Operator_normalization::columns`).
-  std::size_t balancing_iterations() const { return balancing_iterations_; }
+  std::size_t balancing_iterations() const { return diffusion_operator_.balancing_iterations(); }
   /// Sizes of the heat regions.
   const Heat_region_statistics& region_statistics() const { return statistics_; }
 
@@ -312,7 +311,7 @@ public:
     std::vector<Eigen::VectorXd> result(steps.size());
     const std::size_t last = steps.empty() ? 0 : *std::max_element(steps.begin(), steps.end());
     Eigen::VectorXd current = field, next(field.size());
-    Product_scratch scratch = make_product_scratch();
+    internal::Diffusion_operator::Product_scratch scratch = diffusion_operator_.make_scratch();
     for(std::size_t k = 0;; ++k)
     {
       for(std::size_t s = 0; s < steps.size(); ++s)
@@ -320,7 +319,7 @@ public:
           result[s] = current;
       if(k == last)
         break;
-      apply(current, next, scratch);
+      diffusion_operator_.apply(current, next, scratch);
       current.swap(next);
       progress.report(double(k + 1) / double(last), "the diffusion");
     }
@@ -348,70 +347,6 @@ public:
   }
 
 private:
-  // The scratch of one product with A_t (see internal::Column_group_matrix).
-  struct Product_scratch
-  {
-    Eigen::VectorXd partial, gathered;
-  };
-
-  Product_scratch make_product_scratch() const
-  {
-    const Eigen::Index group_rows = Eigen::Index(matrix_.number_of_group_rows());
-    return Product_scratch{Eigen::VectorXd(group_rows),
-                           Eigen::VectorXd(normalization_ == Operator_normalization::balanced ? group_rows : 0)};
-  }
-
-  // next = A_t current
-  void apply(const Eigen::VectorXd& current, Eigen::VectorXd& next, Product_scratch& scratch) const
-  {
-    if(normalization_ == Operator_normalization::balanced)
-      matrix_.multiply_symmetric_part(current, next, scaling_, correction_, scratch.partial, scratch.gathered);
-    else
-      matrix_.multiply(current, next, scratch.partial);
-  }
-
-  // A_t in compressed columns: the stored matrix itself (columns), or
-  // D ((K + K^T) / 2) D + diag(c) made of the stored kernel matrix K (balanced).
-  Sparse_matrix make_operator_matrix() const
-  {
-    Sparse_matrix kernel = matrix_.column_major();
-    if(normalization_ == Operator_normalization::columns)
-      return kernel;
-    const Sparse_matrix transposed = kernel.transpose();
-    Sparse_matrix result = 0.5 * (kernel + transposed);
-    for(Eigen::Index j = 0; j < result.outerSize(); ++j)
-      for(Sparse_matrix::InnerIterator it(result, j); it; ++it)
-      {
-        it.valueRef() = scaling_[it.row()] * it.value() * scaling_[j];
-        if(it.row() == j)
-          it.valueRef() += correction_[j];
-      }
-    return result;
-  }
-
-  // Balances the kernel matrix K kept in matrix_ (see Operator_normalization::balanced).
-  // `column_sums` are those of the kernel values H (K = (H + H^T) / 2): the regions are
-  // nearly symmetric, so they are nearly K's row sums, and S^(-1/2) is nearly the first,
-  // undamped step of the iteration, without its product.
-  // `peaks` are the diagonal of K.
-  void balance(const Eigen::VectorXd& column_sums, const Eigen::VectorXd& peaks, const internal::Progress& progress)
-  {
-    progress.report(0., "the balancing of A_t");
-    const std::size_t n = number_of_vertices();
-    const Eigen::VectorXd ones = Eigen::VectorXd::Ones(Eigen::Index(n)), none;
-    Product_scratch scratch = make_product_scratch();
-    internal::Symmetric_balancing balancing = internal::balance_symmetric_matrix(
-        column_sums.cwiseSqrt().cwiseInverse(), peaks,
-        [&](const Eigen::VectorXd& d, Eigen::VectorXd& row_sums) {
-          matrix_.multiply_symmetric_part(ones, row_sums, d, none, scratch.partial, scratch.gathered);
-        },
-        balancing_tolerance, maximum_balancing_iterations);
-    scaling_ = std::move(balancing.scaling);
-    correction_ = std::move(balancing.correction);
-    balancing_iterations_ = balancing.iterations;
-    progress.report(1., "the balancing of A_t");
-  }
-
   void check_field(const Eigen::VectorXd& field) const
   {
     if(field.size() != Eigen::Index(number_of_vertices()))
@@ -475,14 +410,16 @@ private:
                           const std::vector<std::size_t>& group_begin, const internal::Progress& progress)
   {
     const bool balanced = normalization_ == Operator_normalization::balanced;
+    diffusion_operator_ = internal::Diffusion_operator(normalization_);
     const internal::Heat_region_options options{threshold(), maximum_region_size, !balanced, spectral_group_size};
     Eigen::VectorXd column_sums, peaks;
     // (the balancing takes a few products with K: a small part of the whole)
     internal::build_heat_regions(columns, ncc_->indexed_mesh(), order, group_begin, options,
-                                 balanced ? progress.part(0., 0.95) : progress, matrix_, statistics_, column_sums,
-                                 peaks);
+                                 balanced ? progress.part(0., 0.95) : progress, diffusion_operator_.kernel_matrix(),
+                                 statistics_, column_sums, peaks);
     if(balanced)
-      balance(column_sums, peaks, progress.part(0.95, 1.));
+      diffusion_operator_.balance(column_sums, peaks, balancing_tolerance, maximum_balancing_iterations,
+                                  progress.part(0.95, 1.));
   }
 
   // operator_matrix(), made on the first call (thread-safe), shared by copies.
@@ -510,9 +447,7 @@ private:
   Heat_kernel_method method_ = Heat_kernel_method::spectral;
   Operator_normalization normalization_ = Operator_normalization::balanced;
   double time_ = 1.;
-  internal::Column_group_matrix matrix_;  // A_t (columns), or the kernel matrix K (balanced)
-  Eigen::VectorXd scaling_, correction_;  // balanced: A_t = D ((K + K^T) / 2) D + diag(correction)
-  std::size_t balancing_iterations_ = 0;
+  internal::Diffusion_operator diffusion_operator_;  // A_t
   std::shared_ptr<Column_major_copy> column_major_ = std::make_shared<Column_major_copy>();
   Heat_region_statistics statistics_;
 };

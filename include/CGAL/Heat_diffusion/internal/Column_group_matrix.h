@@ -176,20 +176,16 @@ public:
     CGAL_precondition(row_group_rows_.size() == group_row_target_.size());
     for(const Block& block : blocks_)
     {
-      // (raw pointers: the loads of the arrays' addresses stay out of the loops)
       double* const sums = partial.data() + block.first_group_row;
-      const Index* const column_index = block.column_index.data();
-      const Index* const column_begin = block.column_begin.get();
-      const Index* const entry_row = block.entry_row.get();
-      const double* const values = block.values.get();
+      const Block_arrays arrays(block);
       parallel_for(block.group_row_begin.size() - 1, [&](std::size_t g) {
         for(Index r = block.group_row_begin[g]; r < block.group_row_begin[g + 1]; ++r)
           sums[r] = 0;
         for(Index c = block.group_column_begin[g]; c < block.group_column_begin[g + 1]; ++c)
         {
-          const double xj = x[Eigen::Index(column_index[c])];
-          for(Index q = column_begin[c]; q < column_begin[c + 1]; ++q)
-            sums[entry_row[q]] += values[q] * xj;
+          const double xj = x[Eigen::Index(arrays.column_index[c])];
+          for(Index q = arrays.column_begin[c]; q < arrays.column_begin[c + 1]; ++q)
+            sums[arrays.entry_row[q]] += arrays.values[q] * xj;
         }
       }, 1);
     }
@@ -212,10 +208,7 @@ public:
       double* const sums = partial.data() + block.first_group_row;
       double* const scaled = gathered.data() + block.first_group_row;
       const Index* const targets = group_row_target_.data() + block.first_group_row;
-      const Index* const column_index = block.column_index.data();
-      const Index* const column_begin = block.column_begin.get();
-      const Index* const entry_row = block.entry_row.get();
-      const double* const values = block.values.get();
+      const Block_arrays arrays(block);
       parallel_for(block.group_row_begin.size() - 1, [&](std::size_t g) {
         for(Index r = block.group_row_begin[g]; r < block.group_row_begin[g + 1]; ++r)
         {
@@ -225,13 +218,13 @@ public:
         }
         for(Index c = block.group_column_begin[g]; c < block.group_column_begin[g + 1]; ++c)
         {
-          const Eigen::Index j = Eigen::Index(column_index[c]);
+          const Eigen::Index j = Eigen::Index(arrays.column_index[c]);
           const double xj = scaling[j] * x[j];
           double transposed = 0;
-          for(Index q = column_begin[c]; q < column_begin[c + 1]; ++q)
+          for(Index q = arrays.column_begin[c]; q < arrays.column_begin[c + 1]; ++q)
           {
-            sums[entry_row[q]] += values[q] * xj;
-            transposed += values[q] * scaled[entry_row[q]];
+            sums[arrays.entry_row[q]] += arrays.values[q] * xj;
+            transposed += arrays.values[q] * scaled[arrays.entry_row[q]];
           }
           y[j] = transposed;
         }
@@ -298,6 +291,20 @@ private:
     std::vector<Index> column_index;  // per column, its index in the matrix
     std::shared_ptr<Index[]> column_begin, entry_row;
     std::shared_ptr<double[]> values;
+  };
+
+  // A block's arrays as raw pointers, for the products: the loads of the arrays'
+  // addresses stay out of the loops.
+  struct Block_arrays
+  {
+    explicit Block_arrays(const Block& block)
+      : column_index(block.column_index.data()), column_begin(block.column_begin.get()),
+        entry_row(block.entry_row.get()), values(block.values.get())
+    {}
+    const Index* const column_index;
+    const Index* const column_begin;
+    const Index* const entry_row;
+    const double* const values;
   };
 
   std::size_t n_ = 0, entries_ = 0;
