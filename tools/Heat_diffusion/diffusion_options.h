@@ -189,8 +189,8 @@ inline std::string diffusion_options_help(const Diffusion_spec& spec)
     h += help_option("--kernel K",
                      "'local': each kernel column computed around its vertex, without eigenpairs and without "
                      "truncation (relative error below 1e-4 measured for T from 0.5 to 4; its cost per vertex grows "
-                     "with T); 'spectral': the paper's "
-                     "truncated kernel from M eigenpairs, accurate for large T only (T > 4 ln 10 / lambda_M); "
+                     "with T); 'spectral': the paper's truncated kernel from M eigenpairs, accurate for large T "
+                     "only (T > 4 ln 10 / lambda_M); "
                      "'automatic' (default): 'spectral' if -m, --coarse or --scale-invariant is given, else "
                      "'local'. -m, --coarse and --scale-invariant concern the eigenpairs: with 'local' they are "
                      "usage errors");
