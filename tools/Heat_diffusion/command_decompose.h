@@ -6,8 +6,12 @@
 #ifndef CGAL_HEAT_DIFFUSION_TOOLS_COMMAND_DECOMPOSE_H
 #define CGAL_HEAT_DIFFUSION_TOOLS_COMMAND_DECOMPOSE_H
 
-#include "cli_support.h"
+#include "cli_arguments.h"
+#include "cli_output.h"
+#include "command.h"
+#include "diffusion_fields.h"
 #include "diffusion_options.h"
+#include "diffusion_setup.h"
 
 #include <CGAL/Heat_diffusion/decomposition.h>
 
@@ -30,16 +34,22 @@ inline Diffusion_spec level_spec(const std::string& steps_default = "5")
   return spec;
 }
 
-// -k or --steps-per-level (not both), from 1 to 1000000.
-inline std::size_t parse_steps_per_level(const Arguments& args, const Diffusion_options& o)
+// The steps per level: -k or --steps-per-level (not both), from 1 to 1000000.
+struct Steps_per_level
+{
+  std::size_t value;  // as given, or the default the help states
+  bool given;         // false: the package's default applies
+};
+
+inline Steps_per_level parse_steps_per_level(const Arguments& args, const Diffusion_options& o)
 {
   if(args.has("-k") && args.has("--steps-per-level"))
     throw Usage_error("give the steps per level once, with -k or --steps-per-level");
   if(args.has("--steps-per-level"))
-    return parse_count("--steps-per-level", args.value("--steps-per-level", ""), 1, maximum_steps);
+    return {parse_count("--steps-per-level", args.value("--steps-per-level", ""), 1, maximum_steps), true};
   if(o.steps.front() == 0)
     throw Usage_error("-k must be a whole number from 1 to 1000000 here (the steps of one level), not '0'");
-  return o.steps.front();
+  return {o.steps.front(), args.has("-k")};
 }
 
 inline Diffusion_spec decompose_spec()
@@ -74,113 +84,106 @@ inline std::string decompose_help()
          common_options_help();
 }
 
-inline int run_decompose(int argc, char** argv)
+inline Command decompose_command()
 {
-  const Diffusion_spec spec = decompose_spec();
-  Arguments args = diffusion_arguments(spec, {}, {"--levels", "--steps-per-level"});
-  if(!args.parse_command(argc, argv, "decompose", "MESH", decompose_help()))
-    return success;
-  const std::string input = args.positional()[0];
-  const Diffusion_options o = parse_diffusion_options(args, spec);
-  const std::size_t levels = parse_count("--levels", args.value("--levels", "3"), 1, 1000);
-  const std::size_t steps_per_level = parse_steps_per_level(args, o);
-  const std::string prefix = args.value("-o", fs::path(input).stem().string() + "_decomposed");
-  std::vector<std::string> outputs;
-  for(std::size_t j = 1; j <= levels; ++j)
-    outputs.push_back(prefix + "_band" + std::to_string(j) + ".ply");
-  outputs.push_back(prefix + "_residual.ply");
-  for(const std::string& output : outputs)
-    check_output_path(output, {input, o.field});
+  Command command;
+  command.name = "decompose";
+  command.overview = "decompose MESH Detail bands and residual of the NS (or a field), each band of sum 0";
+  command.valued = {"--levels", "--steps-per-level"};
+  command.diffusion = decompose_spec();
+  command.help = decompose_help;
+  command.run = [](Run& r) {
+    const Diffusion_options& o = r.diffusion;
+    const std::size_t levels = parse_count("--levels", r.args.value("--levels", "3"), 1, 1000);
+    const Steps_per_level steps_per_level = parse_steps_per_level(r.args, o);
+    const std::string prefix = r.args.value("-o", default_output(r.input, "_decomposed"));
+    std::vector<std::string> outputs;
+    for(std::size_t j = 1; j <= levels; ++j)
+      outputs.push_back(prefix + "_band" + std::to_string(j) + ".ply");
+    outputs.push_back(prefix + "_residual.ply");
+    r.check_outputs(outputs, {o.field});
 
-  Stage_timer timer;
-  Mesh mesh;
-  read_triangle_mesh(input, mesh);
-  timer.stop("read");
-  const Diffusion_setup setup = make_diffusion(mesh, o, input, timer);
-  const Diffusion& diffusion = *setup.diffusion;
+    Mesh mesh;
+    r.read_mesh(mesh);
+    const Diffusion_setup setup = make_diffusion(mesh, o, r.input, r.timer);
+    const Diffusion& diffusion = *setup.diffusion;
 
-  typedef Mesh::Property_map<Mesh::Vertex_index, double> Field_map;
-  const Eigen::VectorXd f0 = initial_field(o.field, mesh, diffusion);
-  Field_map field = mesh.add_property_map<Mesh::Vertex_index, double>("v:decompose_input", 0.).first;
-  for(auto v : mesh.vertices())
-    field[v] = f0[Eigen::Index(diffusion.vertex_index(v))];
-  std::vector<Field_map> bands;
-  for(std::size_t j = 1; j <= levels; ++j)
-    bands.push_back(mesh.add_property_map<Mesh::Vertex_index, double>("v:band" + std::to_string(j), 0.).first);
-  Field_map residual = mesh.add_property_map<Mesh::Vertex_index, double>("v:residual", 0.).first;
-  for_input(input, [&] {
-    HD::decompose_field(diffusion, field, bands, residual, HD::parameters::steps_per_level(steps_per_level));
-  });
-  timer.stop("decomposition");
+    typedef Mesh::Property_map<Mesh::Vertex_index, double> Field_map;
+    const Eigen::VectorXd f0 = initial_field(o.field, mesh, diffusion);
+    Field_map field = mesh.add_property_map<Mesh::Vertex_index, double>("v:decompose_input", 0.).first;
+    for(auto v : mesh.vertices())
+      field[v] = f0[Eigen::Index(diffusion.vertex_index(v))];
+    std::vector<Field_map> bands;
+    for(std::size_t j = 1; j <= levels; ++j)
+      bands.push_back(mesh.add_property_map<Mesh::Vertex_index, double>("v:band" + std::to_string(j), 0.).first);
+    Field_map residual = mesh.add_property_map<Mesh::Vertex_index, double>("v:residual", 0.).first;
+    for_input(r.input, [&] {
+      if(steps_per_level.given)
+        HD::decompose_field(diffusion, field, bands, residual, HD::parameters::steps_per_level(steps_per_level.value));
+      else
+        HD::decompose_field(diffusion, field, bands, residual);
+    });
+    r.timer.stop("decomposition");
 
-  // The PLYs get copies of the values: the mesh they write must not carry the maps.
-  std::vector<std::vector<double> > values;
-  for(const Field_map& map : bands)
-    values.emplace_back(map.begin(), map.end());
-  values.emplace_back(residual.begin(), residual.end());
-  const std::vector<double> input_values(field.begin(), field.end());
-  for(Field_map& map : bands)
-    mesh.remove_property_map(map);
-  mesh.remove_property_map(residual);
-  mesh.remove_property_map(field);
-  Output_files files;
-  for(std::size_t j = 0; j < values.size(); ++j)
-    write_fields_ply(files, outputs[j], mesh, {{"field", values[j]}});
-  files.commit();
-  timer.stop("write");
+    // The PLYs get copies of the values: the mesh they write must not carry the maps.
+    std::vector<std::vector<double> > values;
+    for(const Field_map& map : bands)
+      values.emplace_back(map.begin(), map.end());
+    values.emplace_back(residual.begin(), residual.end());
+    const std::vector<double> input_values(field.begin(), field.end());
+    for(Field_map& map : bands)
+      mesh.remove_property_map(map);
+    mesh.remove_property_map(residual);
+    mesh.remove_property_map(field);
+    Output_files files;
+    for(std::size_t j = 0; j < values.size(); ++j)
+      write_fields_ply(files, outputs[j], mesh, {{"field", values[j]}});
+    files.commit();
+    r.timer.stop("write");
 
-  double absolute_sum = 0, total_heat = 0;
-  for(double x : input_values)
-  {
-    absolute_sum += std::abs(x);
-    total_heat += x;
-  }
-  Json_object band_json, names;
-  double worst_relative_sum = 0;
-  for(std::size_t j = 0; j + 1 < values.size(); ++j)
-  {
-    double sum = 0, squares = 0;
-    for(double x : values[j])
+    double absolute_sum = 0, total_heat = 0;
+    for(double x : input_values)
     {
-      sum += x;
-      squares += x * x;
+      absolute_sum += std::abs(x);
+      total_heat += x;
     }
-    const double relative = absolute_sum > 0 ? std::abs(sum) / absolute_sum : 0.;
-    worst_relative_sum = (std::max)(worst_relative_sum, relative);
-    Json_object b;
-    b.number("sum", sum).number("relative_sum", relative).number("l2_norm", std::sqrt(squares));
-    band_json.object(std::to_string(j + 1), b);
-    names.string(std::to_string(j + 1), outputs[j]);
-  }
-  names.string("residual", outputs.back());
-  double residual_heat = 0;
-  for(double x : values.back())
-    residual_heat += x;
+    Json_object band_json, names;
+    double worst_relative_sum = 0;
+    for(std::size_t j = 0; j + 1 < values.size(); ++j)
+    {
+      double sum = 0, squares = 0;
+      for(double x : values[j])
+      {
+        sum += x;
+        squares += x * x;
+      }
+      const double relative = absolute_sum > 0 ? std::abs(sum) / absolute_sum : 0.;
+      worst_relative_sum = (std::max)(worst_relative_sum, relative);
+      Json_object b;
+      b.number("sum", sum).number("relative_sum", relative).number("l2_norm", std::sqrt(squares));
+      band_json.object(std::to_string(j + 1), b);
+      names.string(std::to_string(j + 1), outputs[j]);
+    }
+    names.string("residual", outputs.back());
+    double residual_heat = 0;
+    for(double x : values.back())
+      residual_heat += x;
 
-  note_automatic_coarse(o, mesh.number_of_vertices(), setup.kernel ? setup.kernel->coarse_vertex_count() : 0);
-  warn_about_collapsed_regions(diffusion, o);
-  if(!o.quiet)
-    std::cerr << levels << " bands of " << steps_per_level << " steps; largest |band sum| / sum |S| = "
-              << worst_relative_sum << "\nwritten to " << prefix << "_band*.ply and " << outputs.back() << "\n";
-  if(o.json)
-  {
-    Json_object summary;
-    summary.string("command", "decompose")
-        .string("input", input)
-        .string("field", o.field)
-        .object("outputs", names)
-        .integer("vertices", (long long)mesh.number_of_vertices());
-    add_diffusion_json(summary, o, mesh.number_of_vertices(), setup.kernel.get());
-    summary.integer("levels", (long long)levels)
-        .integer("steps_per_level", (long long)steps_per_level)
+    note_automatic_coarse(o, mesh.number_of_vertices(), setup.kernel ? setup.kernel->coarse_vertex_count() : 0);
+    warn_about_collapsed_regions(diffusion, o);
+    if(!r.quiet)
+      std::cerr << levels << " bands of " << steps_per_level.value << " steps; largest |band sum| / sum |S| = "
+                << worst_relative_sum << "\nwritten to " << prefix << "_band*.ply and " << outputs.back() << "\n";
+    r.summary.string("field", o.field).object("outputs", names).integer("vertices", (long long)mesh.number_of_vertices());
+    add_diffusion_json(r.summary, o, mesh.number_of_vertices(), setup.kernel.get());
+    r.summary.integer("levels", (long long)levels)
+        .integer("steps_per_level", (long long)steps_per_level.value)
         .object("heat_regions", heat_region_json(diffusion.region_statistics()))
         .number("total_heat", total_heat)
         .number("residual_heat", residual_heat)
-        .object("bands", band_json)
-        .object("timings_ms", timings_json(timer));
-    std::cout << summary.str() << std::endl;
-  }
-  return success;
+        .object("bands", band_json);
+  };
+  return command;
 }
 
 } // namespace heat_diffusion_cli

@@ -7,14 +7,19 @@
 #ifndef CGAL_HEAT_DIFFUSION_TOOLS_COMMAND_DENOISE_H
 #define CGAL_HEAT_DIFFUSION_TOOLS_COMMAND_DENOISE_H
 
-#include "cli_support.h"
+#include "cli_arguments.h"
+#include "cli_measures.h"
+#include "cli_output.h"
+#include "command.h"
 #include "diffusion_options.h"
+#include "diffusion_setup.h"
 
 #include <CGAL/Heat_diffusion/denoising.h>
 
 #include <functional>
 #include <iostream>
 #include <string>
+#include <vector>
 
 namespace heat_diffusion_cli {
 
@@ -66,105 +71,107 @@ inline std::string denoise_help()
          common_options_help();
 }
 
-inline int run_denoise(int argc, char** argv)
+// --method, checked; the options of the other method would be silently ignored: they
+// are refused instead. The default of -k depends on the method.
+inline void adapt_denoise_spec(const Arguments& args, Diffusion_spec& spec)
 {
-  const Diffusion_spec spec = denoise_spec();
-  Arguments args = diffusion_arguments(spec, {}, {"--iterations", "--anchor-weight", "--method", "--normal-sigma",
-                                                  "--displacement-limit"});
-  if(!args.parse_command(argc, argv, "denoise", "NOISY mesh", denoise_help()))
-    return success;
-  const std::string input = args.positional()[0];
   const std::string method_name = args.value("--method", "normal_filtering");
   if(method_name != "normal_filtering" && method_name != "signature_diffusion")
     throw Usage_error("--method must be normal_filtering or signature_diffusion, not '" + method_name + "'");
   const bool filtering = method_name == "normal_filtering";
-  const HD::Denoising_method method =
-      filtering ? HD::Denoising_method::normal_filtering : HD::Denoising_method::signature_diffusion;
-  // The options of the other method would be silently ignored: refused instead.
   for(const char* option : filtering ? std::vector<const char*>{"--sigma", "--time", "--kernel", "-m", "--coarse",
                                                                 "--anchor-weight"}
                                      : std::vector<const char*>{"--normal-sigma", "--displacement-limit"})
     if(args.has(option))
       throw Usage_error(std::string(option) + " applies to --method " +
                         (filtering ? "signature_diffusion" : "normal_filtering") + " only");
-  Diffusion_spec method_spec = spec;
-  method_spec.steps_default = filtering ? "2" : "1";
-  const Diffusion_options o = parse_diffusion_options(args, method_spec);
-  const std::size_t iterations =
-      parse_count("--iterations", args.value("--iterations", filtering ? "100" : "2"), 0, 10000);
-  const std::size_t k = o.steps.front();
-  const double anchor_weight = parse_number("--anchor-weight", args.value("--anchor-weight", "0.7"), 0., true);
-  const double displacement_limit =
-      parse_number("--displacement-limit", args.value("--displacement-limit", "1.1"), 0., true);
-  const bool automatic_normal_sigma = !args.has("--normal-sigma");
-  const double normal_sigma =
-      automatic_normal_sigma ? 0. : parse_number("--normal-sigma", args.value("--normal-sigma", ""), 0., true);
-  const std::string output = args.value("-o", default_output(input, "_denoised.off"));
-  mesh_format(output);
-  check_output_path(output, {input});
+  spec.steps_default = filtering ? "2" : "1";
+}
 
-  Stage_timer timer;
-  Mesh mesh;
-  const std::size_t triangulated = read_triangle_mesh(input, mesh);
-  const Mesh noisy = mesh;
-  timer.stop("read");
+inline Command denoise_command()
+{
+  Command command;
+  command.name = "denoise";
+  command.overview = "denoise NOISY  Mesh denoising by diffusion of the NS (eq. 22-23), writes OFF, OBJ, PLY or STL";
+  command.argument = "NOISY mesh";
+  command.valued = {"--iterations", "--anchor-weight", "--method", "--normal-sigma", "--displacement-limit"};
+  command.diffusion = denoise_spec();
+  command.adapt_diffusion = adapt_denoise_spec;
+  command.help = denoise_help;
+  command.run = [](Run& r) {
+    const Diffusion_options& o = r.diffusion;
+    const std::string method_name = r.args.value("--method", "normal_filtering");
+    const bool filtering = method_name == "normal_filtering";
+    const HD::Denoising_method method =
+        filtering ? HD::Denoising_method::normal_filtering : HD::Denoising_method::signature_diffusion;
+    const std::size_t iterations =
+        parse_count("--iterations", r.args.value("--iterations", filtering ? "100" : "2"), 0, 10000);
+    const std::size_t k = o.steps.front();
+    const double anchor_weight = parse_number("--anchor-weight", r.args.value("--anchor-weight", "0.7"), 0., true);
+    const double displacement_limit =
+        parse_number("--displacement-limit", r.args.value("--displacement-limit", "1.1"), 0., true);
+    const bool automatic_normal_sigma = !r.args.has("--normal-sigma");
+    const double normal_sigma =
+        automatic_normal_sigma ? 0. : parse_number("--normal-sigma", r.args.value("--normal-sigma", ""), 0., true);
+    const std::string output = r.args.value("-o", default_output(r.input, "_denoised.off"));
+    mesh_format(output);
+    r.check_outputs({output});
 
-  // One call: denoise_mesh()'s iterations are not independent calls on the previous
-  // result (its normal filtering bounds the total displacement by the noise level of
-  // the input). The progress bar follows its progress_callback, where it reports one.
-  Progress_bar progress("denoising", !o.quiet);
-  for_input(input, [&] {
-    const auto np = HD::parameters::combine(
-        HD::parameters::denoising_method(method), CGAL::parameters::number_of_iterations(unsigned(iterations)),
-        HD::parameters::number_of_steps(k), HD::parameters::displacement_limit(displacement_limit),
-        HD::parameters::sigma(o.sigma), HD::parameters::time(o.time), HD::parameters::kernel_method(o.method),
-        HD::parameters::operator_normalization(o.normalization),
-        HD::parameters::number_of_eigenpairs(o.eigenpairs), HD::parameters::coarse_vertex_count(o.coarse),
-        HD::parameters::anchor_weight(anchor_weight),
-        HD::parameters::progress_callback(std::function<bool(double)>(std::ref(progress))));
-    if(automatic_normal_sigma)  // the default depends on the noise: left to denoise_mesh()
-      HD::denoise_mesh(mesh, np);
-    else
-      HD::denoise_mesh(mesh, HD::parameters::combine(np, HD::parameters::normal_sigma(normal_sigma)));
-  });
-  progress.finish();
-  timer.stop("denoise");
+    Mesh mesh;
+    const std::size_t triangulated = r.read_mesh(mesh);
+    const Mesh noisy = mesh;
 
-  // How far the vertices moved, in mean edge lengths of the input: a scale-free
-  // figure, measured before writing (a failure leaves no output). Distances by
-  // std::hypot and running means: no overflow for coordinates near 1e300, no
-  // underflow near 1e-300.
-  double mean_edge = 0, displacement_mean = 0, displacement_max = 0, count = 0;
-  for(auto e : noisy.edges())
-  {
-    count += 1;
-    mean_edge += (point_distance(noisy.point(noisy.vertex(e, 0)), noisy.point(noisy.vertex(e, 1))) - mean_edge) / count;
-  }
-  if(!(mean_edge > 0))
-    mean_edge = 1.;
-  count = 0;
-  for(auto v : mesh.vertices())
-  {
-    const double d = point_distance(mesh.point(v), noisy.point(v)) / mean_edge;
-    count += 1;
-    displacement_mean += (d - displacement_mean) / count;
-    displacement_max = (std::max)(displacement_max, d);
-  }
-  write_mesh(output, mesh);
-  timer.stop("write");
+    // One call: denoise_mesh()'s iterations are not independent calls on the previous
+    // result (its normal filtering bounds the total displacement by the noise level of
+    // the input). The progress bar follows its progress_callback, where it reports one.
+    Progress_bar progress("denoising", !r.quiet);
+    for_input(r.input, [&] {
+      const auto np = HD::parameters::combine(
+          HD::parameters::denoising_method(method), CGAL::parameters::number_of_iterations(unsigned(iterations)),
+          HD::parameters::number_of_steps(k), HD::parameters::displacement_limit(displacement_limit),
+          HD::parameters::sigma(o.sigma), HD::parameters::time(o.time), HD::parameters::kernel_method(o.method),
+          HD::parameters::operator_normalization(o.normalization),
+          HD::parameters::number_of_eigenpairs(o.eigenpairs), HD::parameters::coarse_vertex_count(o.coarse),
+          HD::parameters::anchor_weight(anchor_weight),
+          HD::parameters::progress_callback(std::function<bool(double)>(std::ref(progress))));
+      if(automatic_normal_sigma)  // the default depends on the noise: left to denoise_mesh()
+        HD::denoise_mesh(mesh, np);
+      else
+        HD::denoise_mesh(mesh, HD::parameters::combine(np, HD::parameters::normal_sigma(normal_sigma)));
+    });
+    progress.finish();
+    r.timer.stop("denoise");
 
-  if(!o.quiet)
-    std::cerr << input << ": " << mesh.number_of_vertices() << " vertices, " << method_name
-              << ", vertices moved by " << displacement_mean << " mean edge lengths on average (at most "
-              << displacement_max << ")\nwritten to " << output << "\n";
-  if(o.json)
-  {
+    // How far the vertices moved, in mean edge lengths of the input: a scale-free
+    // figure, measured before writing (a failure leaves no output). Distances by
+    // std::hypot and running means: no overflow for coordinates near 1e300, no
+    // underflow near 1e-300.
+    double mean_edge = 0, displacement_mean = 0, displacement_max = 0, count = 0;
+    for(auto e : noisy.edges())
+    {
+      count += 1;
+      mean_edge += (point_distance(noisy.point(noisy.vertex(e, 0)), noisy.point(noisy.vertex(e, 1))) - mean_edge) / count;
+    }
+    if(!(mean_edge > 0))
+      mean_edge = 1.;
+    count = 0;
+    for(auto v : mesh.vertices())
+    {
+      const double d = point_distance(mesh.point(v), noisy.point(v)) / mean_edge;
+      count += 1;
+      displacement_mean += (d - displacement_mean) / count;
+      displacement_max = (std::max)(displacement_max, d);
+    }
+    write_mesh(output, mesh);
+    r.timer.stop("write");
+
+    if(!r.quiet)
+      std::cerr << r.input << ": " << mesh.number_of_vertices() << " vertices, " << method_name
+                << ", vertices moved by " << displacement_mean << " mean edge lengths on average (at most "
+                << displacement_max << ")\nwritten to " << output << "\n";
     Json_object displacement;
     displacement.number("mean", displacement_mean).number("max", displacement_max);
-    Json_object summary;
-    summary.string("command", "denoise")
-        .string("input", input)
-        .string("output", output)
+    r.summary.string("output", output)
         .integer("vertices", (long long)mesh.number_of_vertices())
         .integer("faces", (long long)mesh.number_of_faces())
         .integer("triangulated_faces", (long long)triangulated)
@@ -172,21 +179,18 @@ inline int run_denoise(int argc, char** argv)
         .integer("max_iterations", (long long)iterations);
     if(filtering)
     {
-      summary.integer("steps", (long long)k).number("displacement_limit", displacement_limit);
+      r.summary.integer("steps", (long long)k).number("displacement_limit", displacement_limit);
       if(!automatic_normal_sigma)
-        summary.number("normal_sigma", normal_sigma);
+        r.summary.number("normal_sigma", normal_sigma);
     }
     else
     {
-      add_diffusion_json(summary, o, mesh.number_of_vertices(), nullptr);
-      summary.integer("steps", (long long)k).number("anchor_weight", anchor_weight);
+      add_diffusion_json(r.summary, o, mesh.number_of_vertices(), nullptr);
+      r.summary.integer("steps", (long long)k).number("anchor_weight", anchor_weight);
     }
-    summary
-        .object("displacement_in_mean_edge_lengths", displacement)
-        .object("timings_ms", timings_json(timer));
-    std::cout << summary.str() << std::endl;
-  }
-  return success;
+    r.summary.object("displacement_in_mean_edge_lengths", displacement);
+  };
+  return command;
 }
 
 } // namespace heat_diffusion_cli

@@ -6,8 +6,11 @@
 #ifndef CGAL_HEAT_DIFFUSION_TOOLS_COMMAND_DIFFUSE_H
 #define CGAL_HEAT_DIFFUSION_TOOLS_COMMAND_DIFFUSE_H
 
-#include "cli_support.h"
+#include "cli_output.h"
+#include "command.h"
+#include "diffusion_fields.h"
 #include "diffusion_options.h"
+#include "diffusion_setup.h"
 
 #include <cmath>
 #include <iostream>
@@ -85,91 +88,81 @@ inline std::vector<double> global_total_heat(const Mesh& mesh, const Diffusion& 
   return heat;
 }
 
-inline int run_diffuse(int argc, char** argv)
+inline Command diffuse_command()
 {
-  const Diffusion_spec spec = diffuse_spec();
-  Arguments args = diffusion_arguments(spec, {"--no-baseline"}, {});
-  if(!args.parse_command(argc, argv, "diffuse", "MESH", diffuse_help()))
-    return success;
-  const std::string input = args.positional()[0];
-  const Diffusion_options o = parse_diffusion_options(args, spec);
-  const std::string prefix = args.value("-o", fs::path(input).stem().string() + "_diffused");
-  std::vector<std::string> outputs;
-  for(std::size_t k : o.steps)
-    outputs.push_back(prefix + "_k" + std::to_string(k) + ".ply");
-  for(const std::string& output : outputs)
-    check_output_path(output, {input, o.field});
+  Command command;
+  command.name = "diffuse";
+  command.overview = "diffuse MESH Anisotropic, heat-conserving multi-scale diffusion of the NS or of a field";
+  command.flags = {"--no-baseline"};
+  command.diffusion = diffuse_spec();
+  command.help = diffuse_help;
+  command.run = [](Run& r) {
+    const Diffusion_options& o = r.diffusion;
+    const std::string prefix = r.args.value("-o", default_output(r.input, "_diffused"));
+    const std::vector<std::string> outputs = step_outputs(prefix, o.steps);
+    r.check_outputs(outputs, {o.field});
 
-  Stage_timer timer;
-  Mesh mesh;
-  const std::size_t triangulated = read_triangle_mesh(input, mesh);
-  timer.stop("read");
-  const Diffusion_setup setup = make_diffusion(mesh, o, input, timer);
-  const Diffusion& diffusion = *setup.diffusion;
-  const Eigen::VectorXd f0 = initial_field(o.field, mesh, diffusion);
-  const std::vector<Eigen::VectorXd> fields = diffuse_fields(diffusion, f0, o.steps, o, input);
-  timer.stop("diffusion");
+    Mesh mesh;
+    const std::size_t triangulated = r.read_mesh(mesh);
+    const Diffusion_setup setup = make_diffusion(mesh, o, r.input, r.timer);
+    const Diffusion& diffusion = *setup.diffusion;
+    const Eigen::VectorXd f0 = initial_field(o.field, mesh, diffusion);
+    const std::vector<Eigen::VectorXd> fields = diffuse_fields(diffusion, f0, o.steps, o, r.input);
+    r.timer.stop("diffusion");
 
-  Json_object baseline;
-  std::vector<double> baseline_heat;
-  if(o.json && !args.flag("--no-baseline"))
-  {
-    baseline_heat = global_total_heat(mesh, diffusion, f0, setup.kernel.get(), o, input, baseline);
-    timer.stop("global_baseline");
-  }
+    Json_object baseline;
+    std::vector<double> baseline_heat;
+    if(r.json && !r.args.flag("--no-baseline"))
+    {
+      baseline_heat = global_total_heat(mesh, diffusion, f0, setup.kernel.get(), o, r.input, baseline);
+      r.timer.stop("global_baseline");
+    }
 
-  // All outputs, or none: they are renamed into place together at the end.
-  const double half_range = robust_half_range(in_mesh_order(f0, mesh, diffusion));
-  Output_files files;
-  Json_object heat, global_heat, names, minimum, maximum;
-  for(std::size_t s = 0; s < o.steps.size(); ++s)
-  {
-    write_fields_ply(files, outputs[s], mesh, {{"field", in_mesh_order(fields[s], mesh, diffusion)}}, half_range);
-    heat.number(std::to_string(o.steps[s]), fields[s].sum());
-    minimum.number(std::to_string(o.steps[s]), fields[s].minCoeff());
-    maximum.number(std::to_string(o.steps[s]), fields[s].maxCoeff());
-    if(!baseline_heat.empty())
-      global_heat.number(std::to_string(o.steps[s]), baseline_heat[s]);
-    names.string(std::to_string(o.steps[s]), outputs[s]);
-  }
-  files.commit();
-  timer.stop("write");
+    // All outputs, or none: they are renamed into place together at the end.
+    const double half_range = robust_half_range(in_mesh_order(f0, mesh, diffusion));
+    Output_files files;
+    Json_object heat, global_heat, names, minimum, maximum;
+    for(std::size_t s = 0; s < o.steps.size(); ++s)
+    {
+      write_fields_ply(files, outputs[s], mesh, {{"field", in_mesh_order(fields[s], mesh, diffusion)}}, half_range);
+      heat.number(std::to_string(o.steps[s]), fields[s].sum());
+      minimum.number(std::to_string(o.steps[s]), fields[s].minCoeff());
+      maximum.number(std::to_string(o.steps[s]), fields[s].maxCoeff());
+      if(!baseline_heat.empty())
+        global_heat.number(std::to_string(o.steps[s]), baseline_heat[s]);
+      names.string(std::to_string(o.steps[s]), outputs[s]);
+    }
+    files.commit();
+    r.timer.stop("write");
 
-  const HD::Heat_region_statistics& regions = diffusion.region_statistics();
-  const std::size_t coarse = setup.kernel ? setup.kernel->coarse_vertex_count() : 0;
-  note_automatic_coarse(o, mesh.number_of_vertices(), coarse);
-  if(!o.quiet)
-  {
-    std::cerr << input << ": " << mesh.number_of_vertices() << " vertices, heat regions of " << regions.min_size
-              << ".." << regions.max_size << " vertices (mean " << regions.mean_size << ")\n";
-    warn_about_collapsed_regions(diffusion, o);
-    std::cerr << "written to " << prefix << "_k*.ply\n";
-  }
-  if(o.json)
-  {
-    Json_object summary;
-    summary.string("command", "diffuse")
-        .string("input", input)
-        .string("field", o.field)
+    const HD::Heat_region_statistics& regions = diffusion.region_statistics();
+    const std::size_t coarse = setup.kernel ? setup.kernel->coarse_vertex_count() : 0;
+    note_automatic_coarse(o, mesh.number_of_vertices(), coarse);
+    if(!r.quiet)
+    {
+      std::cerr << r.input << ": " << mesh.number_of_vertices() << " vertices, heat regions of " << regions.min_size
+                << ".." << regions.max_size << " vertices (mean " << regions.mean_size << ")\n";
+      warn_about_collapsed_regions(diffusion, o);
+      std::cerr << "written to " << prefix << "_k*.ply\n";
+    }
+    r.summary.string("field", o.field)
         .object("outputs", names)
         .integer("vertices", (long long)mesh.number_of_vertices())
         .integer("faces", (long long)mesh.number_of_faces())
         .integer("triangulated_faces", (long long)triangulated);
-    add_diffusion_json(summary, o, mesh.number_of_vertices(), setup.kernel.get());
+    add_diffusion_json(r.summary, o, mesh.number_of_vertices(), setup.kernel.get());
     if(setup.kernel)
     {
       const Eigen::VectorXd& lambda = setup.kernel->eigenvalues();
-      summary.number("lambda_min", lambda[0]).number("lambda_max", lambda[lambda.size() - 1]);
+      r.summary.number("lambda_min", lambda[0]).number("lambda_max", lambda[lambda.size() - 1]);
     }
-    summary.object("heat_regions", heat_region_json(regions)).object("total_heat", heat);
+    r.summary.object("heat_regions", heat_region_json(regions)).object("total_heat", heat);
     // (the balanced operator keeps every F^k within the range of F^0)
-    summary.object("minimum", minimum).object("maximum", maximum);
+    r.summary.object("minimum", minimum).object("maximum", maximum);
     if(!baseline_heat.empty())
-      summary.object("global_total_heat", global_heat).object("global_baseline", baseline);
-    summary.object("timings_ms", timings_json(timer));
-    std::cout << summary.str() << std::endl;
-  }
-  return success;
+      r.summary.object("global_total_heat", global_heat).object("global_baseline", baseline);
+  };
+  return command;
 }
 
 } // namespace heat_diffusion_cli

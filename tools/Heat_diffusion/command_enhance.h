@@ -7,9 +7,13 @@
 #ifndef CGAL_HEAT_DIFFUSION_TOOLS_COMMAND_ENHANCE_H
 #define CGAL_HEAT_DIFFUSION_TOOLS_COMMAND_ENHANCE_H
 
-#include "cli_support.h"
+#include "cli_arguments.h"
+#include "cli_measures.h"
+#include "cli_output.h"
+#include "command.h"
 #include "command_decompose.h"  // level_spec, parse_steps_per_level
 #include "diffusion_options.h"
+#include "diffusion_setup.h"
 
 #include <CGAL/Heat_diffusion/decomposition.h>
 #include <CGAL/Heat_diffusion/normal_controlled_coordinates.h>
@@ -61,7 +65,7 @@ inline double normal_signature_variance(const Mesh& mesh)
   return squares / n - (sum / n) * (sum / n);
 }
 
-// The defaults of filter_shape(): 2 steps per level.
+// -k as filter_shape() takes it; the help states its default of 2 steps per level.
 inline Diffusion_spec enhance_spec() { return level_spec("2"); }
 
 inline std::string enhance_help()
@@ -89,55 +93,58 @@ inline std::string enhance_help()
          common_options_help();
 }
 
-inline int run_enhance(int argc, char** argv)
+inline Command enhance_command()
 {
-  const Diffusion_spec spec = enhance_spec();
-  Arguments args = diffusion_arguments(spec, {}, {"--weights", "--steps-per-level", "--anchor-weight"});
-  if(!args.parse_command(argc, argv, "enhance", "MESH", enhance_help()))
-    return success;
-  const std::string input = args.positional()[0];
-  const Diffusion_options o = parse_diffusion_options(args, spec);
-  const std::vector<double> weights = parse_weights(args.value("--weights", "1,3,3"));
-  const std::size_t steps_per_level = parse_steps_per_level(args, o);
-  const double anchor_weight = parse_number("--anchor-weight", args.value("--anchor-weight", "0.03"), 0., true);
-  const std::string output = args.value("-o", default_output(input, "_enhanced.off"));
-  mesh_format(output);
-  check_output_path(output, {input});
+  Command command;
+  command.name = "enhance";
+  command.overview = "enhance MESH   Shape editing: reweighted NS detail bands, e.g. --weights 1,3,3";
+  command.valued = {"--weights", "--steps-per-level", "--anchor-weight"};
+  command.diffusion = enhance_spec();
+  command.help = enhance_help;
+  command.run = [](Run& r) {
+    const Diffusion_options& o = r.diffusion;
+    const std::vector<double> weights = parse_weights(r.args.value("--weights", "1,3,3"));
+    const Steps_per_level steps_per_level = parse_steps_per_level(r.args, o);
+    const bool anchor_weight_given = r.args.has("--anchor-weight");
+    const double anchor_weight = parse_number("--anchor-weight", r.args.value("--anchor-weight", "0.03"), 0., true);
+    const std::string output = r.args.value("-o", default_output(r.input, "_enhanced.off"));
+    mesh_format(output);
+    r.check_outputs({output});
 
-  Stage_timer timer;
-  Mesh mesh;
-  read_triangle_mesh(input, mesh);
-  timer.stop("read");
-  const Mesh original = mesh;
-  const double input_variance = for_input(input, [&] { return normal_signature_variance(mesh); });
-  timer.stop("ncc");
-  Progress_bar progress("eigen solve", !o.quiet);
-  for_input(input, [&] {
-    with_diffusion_parameters(o, progress, [&](const auto& np) {
-      HD::filter_shape(mesh, weights,
-                       HD::parameters::combine(np, HD::parameters::steps_per_level(steps_per_level),
-                                               HD::parameters::anchor_weight(anchor_weight)));
+    Mesh mesh;
+    r.read_mesh(mesh);
+    const Mesh original = mesh;
+    const double input_variance = for_input(r.input, [&] { return normal_signature_variance(mesh); });
+    r.timer.stop("ncc");
+    // filter_shape() gets the steps per level and the anchor weight only if given: its
+    // own defaults apply otherwise.
+    Progress_bar progress("eigen solve", !r.quiet);
+    for_input(r.input, [&] {
+      with_diffusion_parameters(o, progress, [&](const auto& np) {
+        with_parameter_if(steps_per_level.given, np, HD::parameters::steps_per_level(steps_per_level.value),
+                          [&](const auto& np2) {
+          with_parameter_if(anchor_weight_given, np2, HD::parameters::anchor_weight(anchor_weight),
+                            [&](const auto& np3) { HD::filter_shape(mesh, weights, np3); });
+        });
+      });
     });
-  });
-  progress.finish();
-  timer.stop("filter_shape");
-  // Measured before writing: a failure leaves no output.
-  const double output_variance = for_input(input, [&] { return normal_signature_variance(mesh); });
-  double displacement = 0;
-  for(auto v : mesh.vertices())
-    displacement = (std::max)(displacement, point_distance(mesh.point(v), original.point(v)));
-  const CGAL::Bbox_3 box = CGAL::Polygon_mesh_processing::bbox(original);
-  const double diagonal = std::hypot(box.xmax() - box.xmin(), box.ymax() - box.ymin(), box.zmax() - box.zmin());
-  const double relative_displacement = diagonal > 0 ? displacement / diagonal : 0.;
-  write_mesh(output, mesh);
-  timer.stop("write");
+    progress.finish();
+    r.timer.stop("filter_shape");
+    // Measured before writing: a failure leaves no output.
+    const double output_variance = for_input(r.input, [&] { return normal_signature_variance(mesh); });
+    double displacement = 0;
+    for(auto v : mesh.vertices())
+      displacement = (std::max)(displacement, point_distance(mesh.point(v), original.point(v)));
+    const CGAL::Bbox_3 box = CGAL::Polygon_mesh_processing::bbox(original);
+    const double diagonal = std::hypot(box.xmax() - box.xmin(), box.ymax() - box.ymin(), box.zmax() - box.zmin());
+    const double relative_displacement = diagonal > 0 ? displacement / diagonal : 0.;
+    write_mesh(output, mesh);
+    r.timer.stop("write");
 
-  note_automatic_coarse(o, mesh.number_of_vertices(), expected_coarse_vertex_count(o, mesh.number_of_vertices()));
-  if(!o.quiet)
-    std::cerr << "NS variance " << input_variance << " -> " << output_variance << "; largest displacement "
-              << relative_displacement << " of the diagonal\nwritten to " << output << "\n";
-  if(o.json)
-  {
+    note_automatic_coarse(o, mesh.number_of_vertices(), expected_coarse_vertex_count(o, mesh.number_of_vertices()));
+    if(!r.quiet)
+      std::cerr << "NS variance " << input_variance << " -> " << output_variance << "; largest displacement "
+                << relative_displacement << " of the diagonal\nwritten to " << output << "\n";
     std::string weight_list = "[";
     for(std::size_t j = 0; j < weights.size(); ++j)
     {
@@ -145,22 +152,17 @@ inline int run_enhance(int argc, char** argv)
       os << std::setprecision(17) << weights[j];
       weight_list += (j ? ", " : "") + os.str();
     }
-    Json_object summary;
-    summary.string("command", "enhance")
-        .string("input", input)
-        .string("output", output)
+    r.summary.string("output", output)
         .integer("vertices", (long long)mesh.number_of_vertices())
         .raw("weights", weight_list + "]")
-        .integer("steps_per_level", (long long)steps_per_level);
-    add_diffusion_json(summary, o, mesh.number_of_vertices(), nullptr);
-    summary.number("anchor_weight", anchor_weight)
+        .integer("steps_per_level", (long long)steps_per_level.value);
+    add_diffusion_json(r.summary, o, mesh.number_of_vertices(), nullptr);
+    r.summary.number("anchor_weight", anchor_weight)
         .number("ns_variance_before", input_variance)
         .number("ns_variance_after", output_variance)
-        .number("max_displacement_relative", relative_displacement)
-        .object("timings_ms", timings_json(timer));
-    std::cout << summary.str() << std::endl;
-  }
-  return success;
+        .number("max_displacement_relative", relative_displacement);
+  };
+  return command;
 }
 
 } // namespace heat_diffusion_cli

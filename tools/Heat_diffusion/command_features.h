@@ -6,8 +6,11 @@
 #ifndef CGAL_HEAT_DIFFUSION_TOOLS_COMMAND_FEATURES_H
 #define CGAL_HEAT_DIFFUSION_TOOLS_COMMAND_FEATURES_H
 
-#include "cli_support.h"
+#include "cli_output.h"
+#include "command.h"
+#include "diffusion_fields.h"
 #include "diffusion_options.h"
+#include "diffusion_setup.h"
 
 #include <CGAL/Heat_diffusion/multiscale_features.h>
 
@@ -82,91 +85,79 @@ inline std::vector<double> feature_labels(const std::vector<Mesh::Vertex_index>&
   return labels;
 }
 
-inline int run_features(int argc, char** argv)
+inline Command features_command()
 {
-  const Diffusion_spec spec = features_spec();
-  Arguments args = diffusion_arguments(spec, {}, {"--c"});
-  if(!args.parse_command(argc, argv, "features", "MESH", features_help()))
-    return success;
-  const std::string input = args.positional()[0];
-  const Diffusion_options o = parse_diffusion_options(args, spec);
-  const double c = parse_feature_threshold(args);
-  const std::string prefix = args.value("-o", fs::path(input).stem().string() + "_features");
-  std::vector<std::string> outputs;
-  for(std::size_t k : o.steps)
-    outputs.push_back(prefix + "_k" + std::to_string(k) + ".ply");
-  for(const std::string& output : outputs)
-    check_output_path(output, {input, o.field});
+  Command command;
+  command.name = "features";
+  command.overview = "features MESH  Convex and concave features of the diffused NS (or a field) at scales k";
+  command.valued = {"--c"};
+  command.diffusion = features_spec();
+  command.help = features_help;
+  command.run = [](Run& r) {
+    const Diffusion_options& o = r.diffusion;
+    const double c = parse_feature_threshold(r.args);
+    const std::string prefix = r.args.value("-o", default_output(r.input, "_features"));
+    const std::vector<std::string> outputs = step_outputs(prefix, o.steps);
+    r.check_outputs(outputs, {o.field});
 
-  Stage_timer timer;
-  Mesh mesh;
-  read_triangle_mesh(input, mesh);
-  timer.stop("read");
-  const Diffusion_setup setup = make_diffusion(mesh, o, input, timer);
-  const Diffusion& diffusion = *setup.diffusion;
+    Mesh mesh;
+    r.read_mesh(mesh);
+    const Diffusion_setup setup = make_diffusion(mesh, o, r.input, r.timer);
+    const Diffusion& diffusion = *setup.diffusion;
 
-  // The fields F^k once (with a progress bar), then the features of each: the
-  // criterion of detect_multiscale_features(diffusion, ...) applied to F^k as given.
-  const Eigen::VectorXd f0 = initial_field(o.field, mesh, diffusion);
-  const std::vector<Eigen::VectorXd> fields = diffuse_fields(diffusion, f0, o.steps, o, input);
-  timer.stop("diffusion");
-  std::vector<std::vector<Mesh::Vertex_index> > convex(o.steps.size()), concave(o.steps.size());
-  std::vector<std::vector<double> > values;
-  auto field = mesh.add_property_map<Mesh::Vertex_index, double>("v:diffused_field", 0.).first;
-  for(std::size_t s = 0; s < o.steps.size(); ++s)
-  {
-    values.push_back(in_mesh_order(fields[s], mesh, diffusion));
-    for(auto v : mesh.vertices())
-      field[v] = values[s][v.idx()];
-    for_input(input, [&] {
-      HD::detect_multiscale_features(mesh, field, std::back_inserter(convex[s]), std::back_inserter(concave[s]),
-                                     HD::parameters::feature_threshold(c));
-    });
-  }
-  mesh.remove_property_map(field);
-  timer.stop("features");
-
-  Output_files files;
-  Json_object per_scale, names;
-  for(std::size_t s = 0; s < o.steps.size(); ++s)
-  {
-    write_fields_ply(files, outputs[s], mesh,
-                     {{"feature", feature_labels(convex[s], concave[s], mesh.number_of_vertices())},
-                      {"field", values[s]}},
-                     1.);
-    Json_object scale;
-    scale.raw("convex", json_index_list(convex[s])).raw("concave", json_index_list(concave[s]));
-    per_scale.object(std::to_string(o.steps[s]), scale);
-    names.string(std::to_string(o.steps[s]), outputs[s]);
-  }
-  files.commit();
-  timer.stop("write");
-
-  note_automatic_coarse(o, mesh.number_of_vertices(), setup.kernel ? setup.kernel->coarse_vertex_count() : 0);
-  warn_about_collapsed_regions(diffusion, o);
-  if(!o.quiet)
-  {
+    // The fields F^k once (with a progress bar), then the features of each: the
+    // criterion of detect_multiscale_features(diffusion, ...) applied to F^k as given.
+    const Eigen::VectorXd f0 = initial_field(o.field, mesh, diffusion);
+    const std::vector<Eigen::VectorXd> fields = diffuse_fields(diffusion, f0, o.steps, o, r.input);
+    r.timer.stop("diffusion");
+    std::vector<std::vector<Mesh::Vertex_index> > convex(o.steps.size()), concave(o.steps.size());
+    std::vector<std::vector<double> > values;
+    auto field = mesh.add_property_map<Mesh::Vertex_index, double>("v:diffused_field", 0.).first;
     for(std::size_t s = 0; s < o.steps.size(); ++s)
-      std::cerr << "k = " << o.steps[s] << ": " << convex[s].size() << " convex, " << concave[s].size()
-                << " concave features\n";
-    std::cerr << "written to " << prefix << "_k*.ply\n";
-  }
-  if(o.json)
-  {
-    Json_object summary;
-    summary.string("command", "features")
-        .string("input", input)
-        .string("field", o.field)
-        .object("outputs", names)
-        .integer("vertices", (long long)mesh.number_of_vertices());
-    add_diffusion_json(summary, o, mesh.number_of_vertices(), setup.kernel.get());
-    summary.number("c", c)
+    {
+      values.push_back(in_mesh_order(fields[s], mesh, diffusion));
+      for(auto v : mesh.vertices())
+        field[v] = values[s][v.idx()];
+      for_input(r.input, [&] {
+        HD::detect_multiscale_features(mesh, field, std::back_inserter(convex[s]), std::back_inserter(concave[s]),
+                                       HD::parameters::feature_threshold(c));
+      });
+    }
+    mesh.remove_property_map(field);
+    r.timer.stop("features");
+
+    Output_files files;
+    Json_object per_scale, names;
+    for(std::size_t s = 0; s < o.steps.size(); ++s)
+    {
+      write_fields_ply(files, outputs[s], mesh,
+                       {{"feature", feature_labels(convex[s], concave[s], mesh.number_of_vertices())},
+                        {"field", values[s]}},
+                       1.);
+      Json_object scale;
+      scale.raw("convex", json_index_list(convex[s])).raw("concave", json_index_list(concave[s]));
+      per_scale.object(std::to_string(o.steps[s]), scale);
+      names.string(std::to_string(o.steps[s]), outputs[s]);
+    }
+    files.commit();
+    r.timer.stop("write");
+
+    note_automatic_coarse(o, mesh.number_of_vertices(), setup.kernel ? setup.kernel->coarse_vertex_count() : 0);
+    warn_about_collapsed_regions(diffusion, o);
+    if(!r.quiet)
+    {
+      for(std::size_t s = 0; s < o.steps.size(); ++s)
+        std::cerr << "k = " << o.steps[s] << ": " << convex[s].size() << " convex, " << concave[s].size()
+                  << " concave features\n";
+      std::cerr << "written to " << prefix << "_k*.ply\n";
+    }
+    r.summary.string("field", o.field).object("outputs", names).integer("vertices", (long long)mesh.number_of_vertices());
+    add_diffusion_json(r.summary, o, mesh.number_of_vertices(), setup.kernel.get());
+    r.summary.number("c", c)
         .object("heat_regions", heat_region_json(diffusion.region_statistics()))
-        .object("features", per_scale)
-        .object("timings_ms", timings_json(timer));
-    std::cout << summary.str() << std::endl;
-  }
-  return success;
+        .object("features", per_scale);
+  };
+  return command;
 }
 
 } // namespace heat_diffusion_cli

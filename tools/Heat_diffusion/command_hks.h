@@ -7,13 +7,18 @@
 #ifndef CGAL_HEAT_DIFFUSION_TOOLS_COMMAND_HKS_H
 #define CGAL_HEAT_DIFFUSION_TOOLS_COMMAND_HKS_H
 
-#include "command_features.h"
+#include "cli_measures.h"
+#include "cli_output.h"
+#include "command.h"
+#include "command_features.h"  // json_index_list, parse_feature_threshold
 #include "diffusion_options.h"
+#include "diffusion_setup.h"
 
 #include <cmath>
 #include <iostream>
 #include <iterator>
 #include <limits>
+#include <memory>
 #include <string>
 #include <vector>
 
@@ -55,73 +60,64 @@ inline std::string hks_help()
          common_options_help();
 }
 
-inline int run_hks(int argc, char** argv)
+inline Command hks_command()
 {
-  const Diffusion_spec spec = hks_spec();
-  Arguments args = diffusion_arguments(spec, {}, {"--c"});
-  if(!args.parse_command(argc, argv, "hks", "MESH", hks_help()))
-    return success;
-  const std::string input = args.positional()[0];
-  const Diffusion_options o = parse_diffusion_options(args, spec);
-  const double t = o.time;
-  const double c = parse_feature_threshold(args);
-  const std::string output = args.value("-o", default_output(input, "_hks.ply"));
-  check_output_path(output, {input});
+  Command command;
+  command.name = "hks";
+  command.overview = "hks MESH       The heat kernel signature and its maxima (the paper's baseline)";
+  command.valued = {"--c"};
+  command.diffusion = hks_spec();
+  command.help = hks_help;
+  command.run = [](Run& r) {
+    const Diffusion_options& o = r.diffusion;
+    const double t = o.time;
+    const double c = parse_feature_threshold(r.args);
+    const std::string output = r.args.value("-o", default_output(r.input, "_hks.ply"));
+    r.check_outputs({output});
 
-  Stage_timer timer;
-  Mesh mesh;
-  read_triangle_mesh(input, mesh);
-  timer.stop("read");
-  const std::unique_ptr<Heat_kernel> kernel = make_heat_kernel(mesh, o, input);
-  timer.stop("ncc_and_eigen_solve");
+    Mesh mesh;
+    r.read_mesh(mesh);
+    const std::unique_ptr<Heat_kernel> kernel = make_heat_kernel(mesh, o, r.input);
+    r.timer.stop("ncc_and_eigen_solve");
 
-  auto hks = mesh.add_property_map<Mesh::Vertex_index, double>("v:hks_values", 0.).first;
-  for(auto v : mesh.vertices())
-    hks[v] = kernel->heat_kernel_signature(v, t);
-  std::vector<Mesh::Vertex_index> maxima, minima;
-  for_input(input, [&] {
-    HD::detect_multiscale_features(mesh, hks, std::back_inserter(maxima), std::back_inserter(minima),
-                                   HD::parameters::feature_threshold(c));
-  });
-  std::vector<double> values(mesh.number_of_vertices()), is_maximum(mesh.number_of_vertices(), 0.);
-  for(auto v : mesh.vertices())
-    values[v.idx()] = hks[v];
-  for(auto v : maxima)
-    is_maximum[v.idx()] = 1.;
-  mesh.remove_property_map(hks);
-  timer.stop("hks_and_maxima");
-  write_fields_ply(output, mesh, {{"maximum", is_maximum}, {"hks", values}}, 1.);
-  timer.stop("write");
+    auto hks = mesh.add_property_map<Mesh::Vertex_index, double>("v:hks_values", 0.).first;
+    for(auto v : mesh.vertices())
+      hks[v] = kernel->heat_kernel_signature(v, t);
+    std::vector<Mesh::Vertex_index> maxima, minima;
+    for_input(r.input, [&] {
+      HD::detect_multiscale_features(mesh, hks, std::back_inserter(maxima), std::back_inserter(minima),
+                                     HD::parameters::feature_threshold(c));
+    });
+    std::vector<double> values(mesh.number_of_vertices()), is_maximum(mesh.number_of_vertices(), 0.);
+    for(auto v : mesh.vertices())
+      values[v.idx()] = hks[v];
+    for(auto v : maxima)
+      is_maximum[v.idx()] = 1.;
+    mesh.remove_property_map(hks);
+    r.timer.stop("hks_and_maxima");
+    write_fields_ply(output, mesh, {{"maximum", is_maximum}, {"hks", values}}, 1.);
+    r.timer.stop("write");
 
-  // The truncated kernel needs e^(-lambda_m t) <= 1e-4 to be accurate.
-  const double lambda_m = kernel->decay_rate(kernel->number_of_eigenpairs() - 1);
-  const double t_min = lambda_m > 0 ? 4 * std::log(10.) / lambda_m : std::numeric_limits<double>::infinity();
-  note_automatic_coarse(o, mesh.number_of_vertices(), kernel->coarse_vertex_count());
-  if(!o.quiet)
-  {
-    if(t < t_min)
-      std::cerr << "warning: t = " << t << " is below 4 ln 10 / lambda_m = " << t_min
-                << ": the truncated kernel is inaccurate there (larger -m or -t)\n";
-    std::cerr << maxima.size() << " HKS maxima; written to " << output << "\n";
-  }
-  if(o.json)
-  {
-    const Field_statistics range = statistics(values);
-    Json_object summary;
-    summary.string("command", "hks")
-        .string("input", input)
-        .string("output", output)
-        .integer("vertices", (long long)mesh.number_of_vertices());
-    add_diffusion_json(summary, o, mesh.number_of_vertices(), kernel.get());
-    summary.number("t", t)
+    // The truncated kernel needs e^(-lambda_m t) <= 1e-4 to be accurate.
+    const double lambda_m = kernel->decay_rate(kernel->number_of_eigenpairs() - 1);
+    const double t_min = lambda_m > 0 ? 4 * std::log(10.) / lambda_m : std::numeric_limits<double>::infinity();
+    note_automatic_coarse(o, mesh.number_of_vertices(), kernel->coarse_vertex_count());
+    if(!r.quiet)
+    {
+      if(t < t_min)
+        std::cerr << "warning: t = " << t << " is below 4 ln 10 / lambda_m = " << t_min
+                  << ": the truncated kernel is inaccurate there (larger -m or -t)\n";
+      std::cerr << maxima.size() << " HKS maxima; written to " << output << "\n";
+    }
+    r.summary.string("output", output).integer("vertices", (long long)mesh.number_of_vertices());
+    add_diffusion_json(r.summary, o, mesh.number_of_vertices(), kernel.get());
+    r.summary.number("t", t)
         .number("t_min", t_min)
         .number("c", c)
-        .object("hks", range.json())
-        .raw("maxima", json_index_list(maxima))
-        .object("timings_ms", timings_json(timer));
-    std::cout << summary.str() << std::endl;
-  }
-  return success;
+        .object("hks", statistics(values).json())
+        .raw("maxima", json_index_list(maxima));
+  };
+  return command;
 }
 
 } // namespace heat_diffusion_cli

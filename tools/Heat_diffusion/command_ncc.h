@@ -6,7 +6,9 @@
 #ifndef CGAL_HEAT_DIFFUSION_TOOLS_COMMAND_NCC_H
 #define CGAL_HEAT_DIFFUSION_TOOLS_COMMAND_NCC_H
 
-#include "cli_support.h"
+#include "cli_measures.h"
+#include "cli_output.h"
+#include "command.h"
 
 #include <CGAL/Heat_diffusion/normal_controlled_coordinates.h>
 
@@ -37,59 +39,51 @@ const char* const ncc_help =
     "  --quiet           print nothing but errors (and the JSON summary if asked for)\n"
     "  -h, --help        this text\n";
 
-inline int run_ncc(int argc, char** argv)
+inline Command ncc_command()
 {
-  Arguments args({"--json", "--quiet", "-h", "--help"}, {"-o", "--normals"});
-  if(!args.parse_command(argc, argv, "ncc", "MESH", ncc_help))
-    return success;
-  const std::string input = args.positional()[0];
-  const std::string output = args.value("-o", default_output(input, "_ns.ply"));
-  const std::string normals = args.value("--normals", "area");
-  if(normals != "area" && normals != "pmp")
-    throw Usage_error("--normals must be 'area' or 'pmp', not '" + normals + "'");
-  check_output_path(output, {input});
+  Command command;
+  command.name = "ncc";
+  command.overview = "ncc MESH     Normal-Controlled Coordinates and the Normal Signature (NS) of a mesh";
+  command.valued = {"-o", "--normals"};
+  command.help = [] { return std::string(ncc_help); };
+  command.run = [](Run& r) {
+    const std::string output = r.args.value("-o", default_output(r.input, "_ns.ply"));
+    const std::string normals = r.args.value("--normals", "area");
+    if(normals != "area" && normals != "pmp")
+      throw Usage_error("--normals must be 'area' or 'pmp', not '" + normals + "'");
+    r.check_outputs({output});
 
-  Stage_timer timer;
-  Mesh mesh;
-  const std::size_t triangulated = read_triangle_mesh(input, mesh);
-  timer.stop("read");
+    Mesh mesh;
+    const std::size_t triangulated = r.read_mesh(mesh);
+    std::vector<double> ns(mesh.number_of_vertices());
+    for_input(r.input, [&] {
+      auto compute = [&](const auto& np) {
+        const HD::Normal_controlled_coordinates<Mesh> ncc(mesh, np);
+        for(auto v : mesh.vertices())
+          ns[v.idx()] = ncc.normal_signature(v);
+      };
+      if(normals == "pmp")
+        compute(HD::parameters::vertex_normal_rule(HD::Polygon_mesh_processing_vertex_normals()));
+      else
+        compute(HD::parameters::vertex_normal_rule(HD::Area_weighted_vertex_normals()));
+    });
+    r.timer.stop("ncc");
 
-  std::vector<double> ns(mesh.number_of_vertices());
-  for_input(input, [&] {
-    auto compute = [&](const auto& np) {
-      const HD::Normal_controlled_coordinates<Mesh> ncc(mesh, np);
-      for(auto v : mesh.vertices())
-        ns[v.idx()] = ncc.normal_signature(v);
-    };
-    if(normals == "pmp")
-      compute(HD::parameters::vertex_normal_rule(HD::Polygon_mesh_processing_vertex_normals()));
-    else
-      compute(HD::parameters::vertex_normal_rule(HD::Area_weighted_vertex_normals()));
-  });
-  timer.stop("ncc");
+    write_fields_ply(output, mesh, {{"ns", ns}});
+    r.timer.stop("write");
 
-  write_fields_ply(output, mesh, {{"ns", ns}});
-  timer.stop("write");
-
-  const Field_statistics s = statistics(ns);
-  if(!args.flag("--quiet"))
-    std::cerr << input << ": " << mesh.number_of_vertices() << " vertices, NS in [" << s.min << ", " << s.max
-              << "], written to " << output << "\n";
-  if(args.flag("--json"))
-  {
-    Json_object summary;
-    summary.string("command", "ncc")
-        .string("input", input)
-        .string("output", output)
+    const Field_statistics s = statistics(ns);
+    if(!r.quiet)
+      std::cerr << r.input << ": " << mesh.number_of_vertices() << " vertices, NS in [" << s.min << ", " << s.max
+                << "], written to " << output << "\n";
+    r.summary.string("output", output)
         .string("normals", normals)
         .integer("vertices", static_cast<long long>(mesh.number_of_vertices()))
         .integer("faces", static_cast<long long>(mesh.number_of_faces()))
         .integer("triangulated_faces", static_cast<long long>(triangulated))
-        .object("ns", s.json())
-        .object("timings_ms", timings_json(timer));
-    std::cout << summary.str() << std::endl;
-  }
-  return success;
+        .object("ns", s.json());
+  };
+  return command;
 }
 
 } // namespace heat_diffusion_cli

@@ -2,81 +2,34 @@
 // SPDX-License-Identifier: LGPL-3.0-or-later
 //
 // The diffusion options every subcommand that diffuses shares (diffuse, features, hks,
-// decompose, enhance, denoise): --sigma --time --kernel -m --coarse -k
-// --scale-invariant --field -o --json --quiet, parsed, checked and documented in one
-// place; and building the kernel and the diffusion from them, with a progress bar.
+// decompose, enhance, denoise): --sigma --time --kernel --normalization -m --coarse -k
+// --scale-invariant --field, parsed, checked and documented in one place.
 
 #ifndef CGAL_HEAT_DIFFUSION_TOOLS_DIFFUSION_OPTIONS_H
 #define CGAL_HEAT_DIFFUSION_TOOLS_DIFFUSION_OPTIONS_H
 
-#include "cli_support.h"
+#include "cli_arguments.h"
+#include "mesh_input.h"
 
 #include <CGAL/Heat_diffusion/Anisotropic_heat_diffusion.h>
 #include <CGAL/Heat_diffusion/Edge_weighted_heat_kernel.h>
 #include <CGAL/Heat_diffusion/heat_kernel_method.h>
 
-#include <algorithm>
 #include <cmath>
-#include <fstream>
-#include <functional>
-#include <iostream>
+#include <cstdlib>
 #include <limits>
-#include <memory>
-#include <sstream>
 #include <string>
 #include <vector>
 
 namespace heat_diffusion_cli {
 
-typedef HD::Edge_weighted_heat_kernel<Mesh> Heat_kernel;
-typedef HD::Anisotropic_heat_diffusion<Mesh> Diffusion;
+namespace HD = CGAL::Heat_diffusion;
 
 // The largest values the options take: far inside the range of std::size_t, and
 // beyond anything that finishes (the eigen solve is O(n m^2)).
 constexpr double maximum_eigenpairs = 1000000;
 constexpr double maximum_coarse_vertex_count = 1000000000;
 constexpr double maximum_steps = 1000000;
-
-// One option of a --help text: the name in a column of 20 characters, the text
-// wrapped at 92 columns ('\n' in the text starts a new line).
-inline std::string help_option(const std::string& name, const std::string& text)
-{
-  const std::size_t indent = 22, width = 92;
-  std::string result, line = "  " + name;
-  if(line.size() + 1 > indent)
-  {
-    result += line + "\n";
-    line.clear();
-  }
-  line.resize(indent, ' ');
-  bool empty = true, first = true;
-  std::istringstream paragraphs(text);
-  std::string paragraph;
-  while(std::getline(paragraphs, paragraph, '\n'))
-  {
-    if(!first)
-    {
-      result += line + "\n";
-      line.assign(indent, ' ');
-      empty = true;
-    }
-    first = false;
-    std::istringstream words(paragraph);
-    std::string word;
-    while(words >> word)
-    {
-      if(!empty && line.size() + 1 + word.size() > width)
-      {
-        result += line + "\n";
-        line.assign(indent, ' ');
-        empty = true;
-      }
-      line += (empty ? "" : " ") + word;
-      empty = false;
-    }
-  }
-  return result + line + "\n";
-}
 
 // What a subcommand takes of the shared diffusion options, with its defaults.
 struct Diffusion_spec
@@ -167,18 +120,20 @@ inline Diffusion_options parse_diffusion_options(const Arguments& args, const Di
   o.time_option = spec.time_alias && args.has("-t") ? "-t" : "--time";
   o.time = parse_number(o.time_option, args.value(o.time_option, spec.time_default), 0., true);
 
-  // The package's Heat_kernel_method::automatic: spectral when the eigenpairs are
-  // asked for (-m, --coarse, --scale-invariant), else local.
+  // --kernel automatic is the package's Heat_kernel_method::automatic, by the package's
+  // rule: spectral when the eigenpairs are asked for (-m, --coarse, --scale-invariant,
+  // or a subcommand that has no local kernel), else local.
   const std::string kernel = args.value("--kernel", "automatic");
   if(kernel != "spectral" && kernel != "local" && kernel != "automatic")
     throw Usage_error("--kernel must be 'automatic', 'spectral' or 'local', not '" + kernel + "'");
   o.automatic_method = kernel == "automatic";
-  const bool eigenpairs_requested =
-      args.has("-m") || args.has("--coarse") || (spec.scale_invariant && args.flag("--scale-invariant"));
-  if(kernel == "local" || (o.automatic_method && spec.local_refusal.empty() && !eigenpairs_requested))
-    o.method = HD::Heat_kernel_method::local;
-  else
-    o.method = HD::Heat_kernel_method::spectral;
+  const bool eigenpairs_requested = args.has("-m") || args.has("--coarse") ||
+                                    (spec.scale_invariant && args.flag("--scale-invariant")) ||
+                                    !spec.local_refusal.empty();
+  o.method = HD::internal::choose_kernel_method(kernel == "local"       ? HD::Heat_kernel_method::local
+                                                : kernel == "spectral" ? HD::Heat_kernel_method::spectral
+                                                                       : HD::Heat_kernel_method::automatic,
+                                                eigenpairs_requested);
   if(o.local() && !spec.local_refusal.empty())
     throw Usage_error("--kernel local: " + spec.local_refusal);
 
@@ -233,9 +188,9 @@ inline std::string diffusion_options_help(const Diffusion_spec& spec)
   if(spec.local_refusal.empty())
     h += help_option("--kernel K",
                      "'local': each kernel column computed around its vertex, without eigenpairs and without "
-                     "truncation (relative error below 1e-4 measured for T from 0.5 to 4, where it is 1.1 to 9.5 "
-                     "times faster than 'spectral'; its cost per vertex grows with T); 'spectral': the paper's "
-                     "truncated kernel from M eigenpairs, accurate for large T only (T > 4 ln 10 / lambda_M); "
+                     "truncation (relative error below 1e-4 measured for T from 0.5 to 4; its cost per vertex grows "
+                     "with T); 'spectral': the paper's truncated kernel from M eigenpairs, accurate for large T "
+                     "only (T > 4 ln 10 / lambda_M); "
                      "'automatic' (default): 'spectral' if -m, --coarse or --scale-invariant is given, else "
                      "'local'. -m, --coarse and --scale-invariant concern the eigenpairs: with 'local' they are "
                      "usage errors");
@@ -253,8 +208,8 @@ inline std::string diffusion_options_help(const Diffusion_spec& spec)
     h += help_option("--coarse N",
                      "compute the eigenpairs on a copy simplified to about N vertices and prolongate them to the "
                      "mesh (the paper's eq. 21); 0 computes them on the mesh itself. Default: automatic, " +
-                         std::to_string(Heat_kernel::automatic_coarse_vertex_count) + " vertices for meshes of more "
-                         "than " + std::to_string(Heat_kernel::automatic_coarse_threshold) +
+                         std::to_string(HD::Edge_weighted_heat_kernel<Mesh>::automatic_coarse_vertex_count) + " vertices for meshes of more "
+                         "than " + std::to_string(HD::Edge_weighted_heat_kernel<Mesh>::automatic_coarse_threshold) +
                          " vertices, else none; --json reports the size used and whether it was automatic");
   else
     h += help_option("--coarse N", "not supported yet: " + spec.coarse_refusal);
@@ -276,215 +231,6 @@ inline std::string common_options_help()
          "\nA progress bar is shown on stderr for every stage that lasts more than a second (the eigen solve\n"
          "with the coarse level's simplification, the heat regions, the local kernel, the diffusion steps,\n"
          "denoising), when stderr is a terminal (HEAT_DIFFUSION_PROGRESS=always|never overrides).\n";
-}
-
-// Calls `f` with the named parameters of the kernel and the diffusion (the package's
-// automatic coarse level unless --coarse was given).
-template <typename Function>
-auto with_diffusion_parameters(const Diffusion_options& o, Progress_bar& progress, Function&& f)
-{
-  const auto np = HD::parameters::combine(
-      HD::parameters::sigma(o.sigma), HD::parameters::time(o.time), HD::parameters::kernel_method(o.method),
-      HD::parameters::number_of_eigenpairs(o.eigenpairs), HD::parameters::scale_invariant_kernel(o.scale_invariant),
-      HD::parameters::operator_normalization(o.normalization),
-      HD::parameters::progress_callback(std::function<bool(double)>(std::ref(progress))));
-  if(o.coarse < 0)
-    return f(np);
-  return f(HD::parameters::combine(np, HD::parameters::coarse_vertex_count(std::size_t(o.coarse))));
-}
-
-// The spectral kernel of `mesh`, with a progress bar; errors name the input file.
-inline std::unique_ptr<Heat_kernel> make_heat_kernel(const Mesh& mesh, const Diffusion_options& o,
-                                                     const std::string& input,
-                                                     const std::string& label = "eigen solve")
-{
-  Progress_bar progress(label, !o.quiet);
-  return for_input(input, [&] {
-    return with_diffusion_parameters(o, progress, [&](const auto& np) { return std::make_unique<Heat_kernel>(mesh, np); });
-  });
-}
-
-// The kernel (spectral only) and the diffusion operator A_t.
-struct Diffusion_setup
-{
-  std::unique_ptr<Heat_kernel> kernel;
-  std::unique_ptr<Diffusion> diffusion;
-};
-
-// Builds A_t by the method of --kernel, timing the stages "ncc_and_eigen_solve" and
-// "operator" (spectral) or "ncc_and_local_operator" (local).
-inline Diffusion_setup make_diffusion(const Mesh& mesh, const Diffusion_options& o, const std::string& input,
-                                      Stage_timer& timer)
-{
-  Diffusion_setup s;
-  if(o.local())
-  {
-    // No eigen solve: the NCC, L and B, then A_t block by block of columns.
-    Progress_bar progress("local kernel", !o.quiet);
-    s.diffusion = for_input(input, [&] {
-      return with_diffusion_parameters(o, progress, [&](const auto& np) { return std::make_unique<Diffusion>(mesh, np); });
-    });
-    timer.stop("ncc_and_local_operator");
-  }
-  else
-  {
-    s.kernel = make_heat_kernel(mesh, o, input);
-    timer.stop("ncc_and_eigen_solve");
-    Progress_bar progress("heat regions", !o.quiet);
-    s.diffusion = for_input(input, [&] {
-      return std::make_unique<Diffusion>(
-          *s.kernel, o.time,
-          HD::parameters::combine(HD::parameters::operator_normalization(o.normalization),
-                                  HD::parameters::progress_callback(std::function<bool(double)>(std::ref(progress)))));
-    });
-    progress.finish();
-    timer.stop("operator");
-  }
-  return s;
-}
-
-// The coarse vertex count the package chooses for a mesh of n vertices (before the
-// simplification rounds it), as Edge_weighted_heat_kernel documents it.
-inline std::size_t expected_coarse_vertex_count(const Diffusion_options& o, std::size_t n)
-{
-  if(o.coarse < 0)
-    return n > Heat_kernel::automatic_coarse_threshold ? Heat_kernel::automatic_coarse_vertex_count : 0;
-  return std::size_t(o.coarse) < n ? std::size_t(o.coarse) : 0;
-}
-
-// Says on stderr when the package chose a coarse level by itself.
-inline void note_automatic_coarse(const Diffusion_options& o, std::size_t n, std::size_t used)
-{
-  if(!o.quiet && !o.local() && o.coarse < 0 && used > 0)
-    std::cerr << "note: " << n << " vertices (more than " << Heat_kernel::automatic_coarse_threshold
-              << "): the eigenpairs are computed on a coarse level of " << used
-              << " vertices (--coarse N to choose, --coarse 0 for the full computation)\n";
-}
-
-// The diffusion parameters of a JSON summary: sigma, time, kernel and, for the
-// spectral kernel, the eigenpairs and the coarse level ({"vertex_count": the size
-// used, 0 for none; "automatic": whether the package chose it}). Without a kernel
-// object (the package built it internally), the documented choice is reported.
-inline void add_diffusion_json(Json_object& summary, const Diffusion_options& o, std::size_t n,
-                               const Heat_kernel* kernel)
-{
-  summary.number("sigma", o.sigma).number("time", o.time).string("kernel", o.kernel_name());
-  summary.boolean("kernel_automatic", o.automatic_method);
-  if(o.builds_operator)
-    summary.string("normalization", o.normalization_name());
-  if(o.local())
-    return;
-  Json_object coarse;
-  coarse.integer("vertex_count", (long long)(kernel ? kernel->coarse_vertex_count() : expected_coarse_vertex_count(o, n)))
-      .boolean("automatic", o.coarse < 0);
-  summary.integer("eigenpairs", (long long)(kernel ? kernel->number_of_eigenpairs() : (std::min)(o.eigenpairs, n)))
-      .boolean("scale_invariant", o.scale_invariant)
-      .object("coarse", coarse);
-}
-
-// A field file: one finite number per vertex.
-inline std::vector<double> read_field(const std::string& path, std::size_t n)
-{
-  std::ifstream is(path);
-  if(!is)
-    throw Input_error(path + ": cannot open the field file");
-  std::vector<double> field;
-  std::string token;
-  while(is >> token)
-  {
-    char* end = nullptr;
-    const double x = std::strtod(token.c_str(), &end);
-    if(*end != '\0' || !std::isfinite(x))
-      throw Input_error(path + ": value " + std::to_string(field.size()) + " ('" + token + "') is not a finite number");
-    field.push_back(x);
-  }
-  if(field.size() != n)
-    throw Input_error(path + ": has " + std::to_string(field.size()) + " values, the mesh has " + std::to_string(n) +
-                      " vertices");
-  return field;
-}
-
-// F^0 by the diffusion's vertex index: the Normal Signature, or a field file with one
-// number per vertex in the order of the mesh file.
-inline Eigen::VectorXd initial_field(const std::string& source, const Mesh& mesh, const Diffusion& diffusion)
-{
-  Eigen::VectorXd f0(static_cast<Eigen::Index>(mesh.number_of_vertices()));
-  if(source == "ns")
-    for(auto v : mesh.vertices())
-      f0[Eigen::Index(diffusion.vertex_index(v))] = diffusion.normal_controlled_coordinates().normal_signature(v);
-  else
-  {
-    const std::vector<double> values = read_field(source, mesh.number_of_vertices());
-    for(auto v : mesh.vertices())
-      f0[Eigen::Index(diffusion.vertex_index(v))] = values[v.idx()];
-  }
-  return f0;
-}
-
-// A field by the diffusion's vertex index, back in the order of the mesh's vertices.
-inline std::vector<double> in_mesh_order(const Eigen::VectorXd& field, const Mesh& mesh, const Diffusion& diffusion)
-{
-  std::vector<double> values(mesh.number_of_vertices());
-  for(auto v : mesh.vertices())
-    values[v.idx()] = field[Eigen::Index(diffusion.vertex_index(v))];
-  return values;
-}
-
-// F^k = A_t^k F^0 for every k of `steps`, with a progress bar over the steps.
-inline std::vector<Eigen::VectorXd> diffuse_fields(const Diffusion& diffusion, const Eigen::VectorXd& f0,
-                                                   const std::vector<std::size_t>& steps, const Diffusion_options& o,
-                                                   const std::string& input)
-{
-  return for_input(input, [&] {
-    std::vector<std::size_t> stops(steps);
-    std::sort(stops.begin(), stops.end());
-    const std::size_t last = stops.empty() ? 0 : stops.back();
-    const std::size_t chunk = (std::max)(std::size_t(1), last / 100);
-    Progress_bar progress("diffusion", !o.quiet);
-    std::vector<Eigen::VectorXd> result(steps.size());
-    Eigen::VectorXd current = f0;
-    std::size_t k = 0;
-    for(std::size_t stop : stops)
-    {
-      while(k < stop)
-      {
-        const std::size_t n = (std::min)(chunk, stop - k);
-        current = diffusion.diffuse(current, n);
-        k += n;
-        progress(double(k) / double(last));
-      }
-      for(std::size_t s = 0; s < steps.size(); ++s)
-        if(steps[s] == stop)
-          result[s] = current;
-    }
-    return result;
-  });
-}
-
-inline Json_object heat_region_json(const HD::Heat_region_statistics& regions)
-{
-  Json_object o;
-  o.integer("min", (long long)regions.min_size)
-      .number("mean", regions.mean_size)
-      .integer("max", (long long)regions.max_size)
-      .integer("collapsed", (long long)regions.collapsed_regions)
-      .integer("capped", (long long)regions.capped_regions);
-  return o;
-}
-
-inline void warn_about_collapsed_regions(const Diffusion& diffusion, const Diffusion_options& o)
-{
-  const HD::Heat_region_statistics& regions = diffusion.region_statistics();
-  if(o.quiet || regions.collapsed_regions == 0)
-    return;
-  if(o.local())
-    std::cerr << "warning: " << regions.collapsed_regions
-              << " heat regions collapsed to their vertex (its edge weights isolate it): those vertices keep "
-                 "their heat; a larger --sigma or --time avoids it\n";
-  else
-    std::cerr << "warning: " << regions.collapsed_regions
-              << " heat regions collapsed to their vertex (the truncated kernel is too flat at this t): those "
-                 "vertices keep their heat; larger --sigma, --time or -m, or --kernel local, avoid it\n";
 }
 
 } // namespace heat_diffusion_cli

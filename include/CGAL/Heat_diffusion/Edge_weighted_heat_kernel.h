@@ -42,6 +42,25 @@ struct Heat_kernel_timings
 /// \cond SKIP_IN_MANUAL
 template <typename TriangleMesh, typename GeomTraits>
 class Anisotropic_heat_diffusion;
+
+namespace internal {
+
+// The default coarse level of Edge_weighted_heat_kernel, outside the class template so
+// that code without a mesh type (the command-line tool) applies the same rule.
+constexpr std::size_t automatic_coarse_threshold = 100000;
+constexpr std::size_t automatic_coarse_vertex_count = 20000;
+
+// The vertex count the coarse level aims at for a mesh of n vertices (before the
+// simplification rounds it; 0 for none): `requested` if it is not negative (none unless
+// it is smaller than n), else the automatic choice.
+inline std::size_t coarse_vertex_count_for(double requested, std::size_t n)
+{
+  if(requested < 0)
+    return n > automatic_coarse_threshold ? automatic_coarse_vertex_count : 0;
+  return std::size_t(requested) < n ? std::size_t(requested) : 0;
+}
+
+} // namespace internal
 /// \endcond
 
 /// \ingroup PkgHeatDiffusionKernel
@@ -99,9 +118,9 @@ public:
   typedef Normal_controlled_coordinates<TriangleMesh, GeomTraits> NCC;
 
   /// Meshes larger than this use a coarse level by default.
-  static constexpr std::size_t automatic_coarse_threshold = 100000;
+  static constexpr std::size_t automatic_coarse_threshold = internal::automatic_coarse_threshold;
   /// The coarse vertex count chosen by default for such meshes.
-  static constexpr std::size_t automatic_coarse_vertex_count = 20000;
+  static constexpr std::size_t automatic_coarse_vertex_count = internal::automatic_coarse_vertex_count;
 
   /// Computes the NCC, \f$ L \f$, \f$ B \f$ and the eigenpairs.
   ///
@@ -167,10 +186,7 @@ public:
     const double requested_coarse = double(choose_parameter(get_parameter(np, internal_np::coarse_vertex_count), -1));
     if(!std::isfinite(requested_coarse))
       internal::throw_invalid_input("Edge_weighted_heat_kernel: coarse_vertex_count must be finite");
-    if(requested_coarse < 0)
-      coarse_vertices_ = n > automatic_coarse_threshold ? automatic_coarse_vertex_count : 0;
-    else
-      coarse_vertices_ = std::size_t(requested_coarse) < n ? std::size_t(requested_coarse) : 0;
+    coarse_vertices_ = internal::coarse_vertex_count_for(requested_coarse, n);
     if(coarse_vertices_ > 0 && coarse_vertices_ < 4)
       internal::throw_invalid_input("Edge_weighted_heat_kernel: coarse_vertex_count must be at least 4 (or 0 for none)");
 

@@ -47,17 +47,25 @@ enum class Heat_kernel_method
 /// \cond SKIP_IN_MANUAL
 namespace internal {
 
+// The rule of Heat_kernel_method::automatic, on whether the caller asks for eigenpairs:
+// spectral if it does, else local. Apart from the named parameters below so that code
+// that knows what was asked for at run time only (the command-line tool) applies it too.
+inline Heat_kernel_method choose_kernel_method(Heat_kernel_method requested, bool eigenpairs_requested)
+{
+  if(requested != Heat_kernel_method::automatic)
+    return requested;
+  return eigenpairs_requested ? Heat_kernel_method::spectral : Heat_kernel_method::local;
+}
+
 // The method Heat_kernel_method::automatic stands for, given the named parameters
 // `NamedParameters` of the call: spectral if they ask for eigenpairs, else local.
 template <typename NamedParameters>
 Heat_kernel_method resolve_kernel_method(Heat_kernel_method requested, bool scale_invariant)
 {
-  if(requested != Heat_kernel_method::automatic)
-    return requested;
-  const bool eigenpairs_requested =
-      !parameters::is_default_parameter<NamedParameters, internal_np::number_of_eigenpairs_t>::value ||
-      !parameters::is_default_parameter<NamedParameters, internal_np::coarse_vertex_count_t>::value || scale_invariant;
-  return eigenpairs_requested ? Heat_kernel_method::spectral : Heat_kernel_method::local;
+  return choose_kernel_method(
+      requested, !parameters::is_default_parameter<NamedParameters, internal_np::number_of_eigenpairs_t>::value ||
+                     !parameters::is_default_parameter<NamedParameters, internal_np::coarse_vertex_count_t>::value ||
+                     scale_invariant);
 }
 
 // Whether named parameters of type `NamedParameters` can select the spectral kernel:

@@ -15,7 +15,7 @@
 // Run by scripts/sanitize_and_fuzz.sh; test/Heat_diffusion/fuzz/regressions/ holds
 // the inputs that once failed.
 
-#include "cli_support.h"
+#include "mesh_input.h"  // check_off_stream, Input_error, the tool's Mesh
 
 #include <CGAL/Heat_diffusion/Anisotropic_heat_diffusion.h>
 #include <CGAL/Heat_diffusion/Edge_weighted_heat_kernel.h>

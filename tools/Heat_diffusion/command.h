@@ -1,0 +1,126 @@
+// Copyright (c) 2026 The CGAL Heat_diffusion developers.
+// SPDX-License-Identifier: LGPL-3.0-or-later
+//
+// A subcommand of the tool as one table entry (its name, options, help and work), and
+// what every subcommand does alike: parsing its command line, --help, the shared
+// diffusion options, checking its outputs, reading its mesh, the JSON summary.
+
+#ifndef CGAL_HEAT_DIFFUSION_TOOLS_COMMAND_H
+#define CGAL_HEAT_DIFFUSION_TOOLS_COMMAND_H
+
+#include "cli_arguments.h"
+#include "cli_errors.h"
+#include "cli_json.h"
+#include "cli_output.h"
+#include "cli_progress.h"
+#include "diffusion_options.h"
+#include "mesh_input.h"
+
+#include <functional>
+#include <iostream>
+#include <optional>
+#include <string>
+#include <utility>
+#include <vector>
+
+namespace heat_diffusion_cli {
+
+namespace HD = CGAL::Heat_diffusion;
+
+// One run of a subcommand: its parsed command line and what it reports.
+struct Run
+{
+  explicit Run(Arguments arguments) : args(std::move(arguments)), input(args.positional()[0]) {}
+
+  Arguments args;
+  std::string input;            // the subcommand's one argument, the input mesh
+  Diffusion_options diffusion;  // the shared diffusion options (their defaults if it takes none)
+  bool json = false, quiet = false;
+  Stage_timer timer;
+  // The --json summary: "command" and "input", then the subcommand's members; the
+  // timings of the stages are added last.
+  Json_object summary;
+
+  // Refuses, before any work, outputs that would overwrite the input mesh or one of
+  // `other_inputs`, or that exist and are not regular files.
+  void check_outputs(const std::vector<std::string>& outputs, const std::vector<std::string>& other_inputs = {}) const
+  {
+    std::vector<std::string> inputs(1, input);
+    inputs.insert(inputs.end(), other_inputs.begin(), other_inputs.end());
+    for(const std::string& output : outputs)
+      check_output_path(output, inputs);
+  }
+
+  // Reads the input mesh (stage "read"); returns the number of faces triangulated.
+  std::size_t read_mesh(Mesh& mesh)
+  {
+    timer.start();
+    const std::size_t triangulated = read_triangle_mesh(input, mesh);
+    timer.stop("read");
+    return triangulated;
+  }
+};
+
+// A subcommand: what it states of its own; run_command() does the rest.
+struct Command
+{
+  std::string name;
+  std::string overview;             // its line in the tool's --help
+  std::string argument = "MESH";    // what its one argument is, for the usage error
+  std::vector<std::string> flags;   // its own options without a value ...
+  std::vector<std::string> valued;  // ... and with one (the shared ones come with `diffusion`)
+  std::optional<Diffusion_spec> diffusion;  // the shared diffusion options it takes, if any
+  // Adapts `diffusion` to the subcommand's own options before the shared ones are parsed
+  // (denoise: the defaults of its --method), and refuses those that do not apply.
+  std::function<void(const Arguments&, Diffusion_spec&)> adapt_diffusion;
+  std::function<std::string()> help;  // its --help text
+  std::function<void(Run&)> run;      // its work, given the parsed shared options
+};
+
+// Runs `command` on the command line argv[2..]: the shared options, --help and the
+// JSON summary here, the rest in command.run.
+inline int run_command(const Command& command, int argc, char** argv)
+{
+  std::vector<std::string> flags = command.flags, valued = command.valued;
+  Arguments args = [&] {
+    if(command.diffusion)
+      return diffusion_arguments(*command.diffusion, flags, valued);
+    for(const char* f : {"--json", "--quiet", "-h", "--help"})
+      flags.push_back(f);
+    return Arguments(flags, valued);
+  }();
+  if(!args.parse_command(argc, argv, command.name, command.argument, command.help()))
+    return success;
+
+  Run run(std::move(args));
+  run.json = run.args.flag("--json");
+  run.quiet = run.args.flag("--quiet");
+  if(command.diffusion)
+  {
+    Diffusion_spec spec = *command.diffusion;
+    if(command.adapt_diffusion)
+      command.adapt_diffusion(run.args, spec);
+    run.diffusion = parse_diffusion_options(run.args, spec);
+  }
+  run.summary.string("command", command.name).string("input", run.input);
+  command.run(run);
+  if(run.json)
+  {
+    run.summary.object("timings_ms", timings_json(run.timer));
+    std::cout << run.summary.str() << std::endl;
+  }
+  return success;
+}
+
+// The outputs PREFIX_k<K>.ply of the steps K.
+inline std::vector<std::string> step_outputs(const std::string& prefix, const std::vector<std::size_t>& steps)
+{
+  std::vector<std::string> outputs;
+  for(std::size_t k : steps)
+    outputs.push_back(prefix + "_k" + std::to_string(k) + ".ply");
+  return outputs;
+}
+
+} // namespace heat_diffusion_cli
+
+#endif // CGAL_HEAT_DIFFUSION_TOOLS_COMMAND_H
