@@ -26,6 +26,8 @@
 #include <CGAL/Heat_diffusion/normal_controlled_coordinates.h>
 #include <CGAL/Heat_diffusion/reconstruction.h>
 
+#include "surface_mesh_from_triangles.h"
+
 #include <Eigen/Sparse>
 
 #include <algorithm>
@@ -38,6 +40,7 @@
 #include <sstream>
 #include <stdexcept>
 #include <string>
+#include <type_traits>
 #include <utility>
 #include <vector>
 
@@ -58,6 +61,14 @@ typedef HD::Edge_weighted_heat_kernel<Mesh> Heat_kernel;
 [[noreturn]] void invalid(const std::string& function, const std::string& what)
 {
   throw std::invalid_argument("cgal_heat_diffusion." + function + ": " + what);
+}
+
+// Runs `work` without the GIL (work that takes no progress callback).
+template <typename Work>
+auto without_gil(Work&& work) -> decltype(work())
+{
+  py::gil_scoped_release release;
+  return work();
 }
 
 std::string type_name(py::handle object) { return py::str(py::type::handle_of(object).attr("__name__")); }
@@ -98,8 +109,44 @@ const double* vertex_array(const py::array& V, const std::string& function)
   return static_cast<const double*>(V.data());
 }
 
-// F as m x 3 vertex indices in [0, n), each face with three different vertices.
-std::vector<std::array<std::size_t, 3> > face_array(const py::array& F, std::size_t n, const std::string& function)
+// F as m x 3 vertex indices in [0, n), each face with three different vertices,
+// read as its integer type T (no widening through floating point).
+template <typename T>
+void read_faces(const py::array& F, std::size_t n, const std::string& function, std::vector<std::uint32_t>& faces)
+{
+  const T* in = static_cast<const T*>(F.data());
+  const std::size_t m = faces.size() / 3;
+  for(std::size_t f = 0; f < m; ++f)
+  {
+    for(std::size_t c = 0; c < 3; ++c)
+    {
+      const T i = in[3 * f + c];
+      bool out_of_range = false;
+      if constexpr(std::is_signed<T>::value)
+        out_of_range = i < 0 || static_cast<unsigned long long>(i) >= n;
+      else
+        out_of_range = static_cast<unsigned long long>(i) >= n;
+      if(out_of_range)
+      {
+        std::ostringstream os;
+        os << "F[" << f << "] refers to vertex " << +i << ", out of range [0, " << n << ")";
+        invalid(function, os.str());
+      }
+      faces[3 * f + c] = std::uint32_t(i);
+    }
+    const std::uint32_t* t = &faces[3 * f];
+    if(t[0] == t[1] || t[1] == t[2] || t[0] == t[2])
+    {
+      std::ostringstream os;
+      os << "face " << f << " (vertices " << t[0] << ", " << t[1] << ", " << t[2]
+         << ") is degenerate: it repeats a vertex";
+      invalid(function, os.str());
+    }
+  }
+}
+
+// F checked, as 3 m vertex indices (Surface_mesh numbers its vertices in 32 bits).
+std::vector<std::uint32_t> face_array(const py::array& F, std::size_t n, const std::string& function)
 {
   if(F.ndim() != 2 || F.shape(1) != 3)
     invalid(function, "F must have shape (m, 3) (triangles), not " + shape_text(F));
@@ -108,75 +155,47 @@ std::vector<std::array<std::size_t, 3> > face_array(const py::array& F, std::siz
   if(!((kind == 'i' || kind == 'u') && (size == 1 || size == 2 || size == 4 || size == 8)) ||
      !(F.dtype().attr("isnative").cast<bool>()))
     invalid(function, "F must be an array of integers (int32 or int64), not " + dtype_text(F));
-  const std::size_t m = std::size_t(F.shape(0));
-  auto index = [&](std::size_t k) -> long double {
-    const char* p = static_cast<const char*>(F.data()) + k * std::size_t(size);
-    if(kind == 'i')
-      switch(size)
-      {
-      case 1: return *reinterpret_cast<const std::int8_t*>(p);
-      case 2: return *reinterpret_cast<const std::int16_t*>(p);
-      case 4: return *reinterpret_cast<const std::int32_t*>(p);
-      default: return (long double)(*reinterpret_cast<const std::int64_t*>(p));
-      }
+  std::vector<std::uint32_t> faces(3 * std::size_t(F.shape(0)));
+  if(kind == 'i')
     switch(size)
     {
-    case 1: return *reinterpret_cast<const std::uint8_t*>(p);
-    case 2: return *reinterpret_cast<const std::uint16_t*>(p);
-    case 4: return *reinterpret_cast<const std::uint32_t*>(p);
-    default: return (long double)(*reinterpret_cast<const std::uint64_t*>(p));
+    case 1: read_faces<std::int8_t>(F, n, function, faces); break;
+    case 2: read_faces<std::int16_t>(F, n, function, faces); break;
+    case 4: read_faces<std::int32_t>(F, n, function, faces); break;
+    default: read_faces<std::int64_t>(F, n, function, faces); break;
     }
-  };
-  std::vector<std::array<std::size_t, 3> > faces(m);
-  for(std::size_t f = 0; f < m; ++f)
-  {
-    for(std::size_t c = 0; c < 3; ++c)
+  else
+    switch(size)
     {
-      const long double i = index(3 * f + c);
-      if(i < 0 || i >= (long double)n)
-      {
-        std::ostringstream os;
-        os << "F[" << f << "] refers to vertex " << (long long)i << ", out of range [0, " << n << ")";
-        invalid(function, os.str());
-      }
-      faces[f][c] = std::size_t(i);
+    case 1: read_faces<std::uint8_t>(F, n, function, faces); break;
+    case 2: read_faces<std::uint16_t>(F, n, function, faces); break;
+    case 4: read_faces<std::uint32_t>(F, n, function, faces); break;
+    default: read_faces<std::uint64_t>(F, n, function, faces); break;
     }
-    if(faces[f][0] == faces[f][1] || faces[f][1] == faces[f][2] || faces[f][0] == faces[f][2])
-    {
-      std::ostringstream os;
-      os << "face " << f << " (vertices " << faces[f][0] << ", " << faces[f][1] << ", " << faces[f][2]
-         << ") is degenerate: it repeats a vertex";
-      invalid(function, os.str());
-    }
-  }
   return faces;
 }
 
-// The Surface_mesh of V and F: vertex i is row i of V (checked), face f is row f of F.
-// Surface_mesh refuses a face that would make an edge non-manifold (three faces, or two
-// faces that run along it in the same direction); the package itself rejects what the
-// halfedge structure can hold but it cannot process (non-manifold vertices, isolated
-// vertices, zero-area faces, non-finite coordinates).
-std::unique_ptr<Mesh> make_mesh(py::handle V_object, py::handle F_object, const std::string& function)
+// The Surface_mesh of V and F face by face, as add_face() builds it: vertex i is row i
+// of V (checked), face f is row f of F. Surface_mesh refuses a face that would make an
+// edge non-manifold (three faces, or two faces that run along it in the same
+// direction); the package itself rejects what the halfedge structure can hold but it
+// cannot process (non-manifold vertices, isolated vertices, zero-area faces,
+// non-finite coordinates).
+void add_faces_one_by_one(const double* points, std::size_t n, const std::vector<std::uint32_t>& faces, Mesh& mesh,
+                          const std::string& function)
 {
-  const py::array V = checked_array(V_object, function, "V");
-  const py::array F = checked_array(F_object, function, "F");
-  const double* points = vertex_array(V, function);
-  const std::size_t n = std::size_t(V.shape(0));
-  const std::vector<std::array<std::size_t, 3> > faces = face_array(F, n, function);
-  auto mesh = std::make_unique<Mesh>();
-  mesh->reserve(Mesh::size_type(n), Mesh::size_type(3 * faces.size() / 2 + 3), Mesh::size_type(faces.size()));
+  const std::size_t m = faces.size() / 3;
+  mesh.reserve(Mesh::size_type(n), Mesh::size_type(3 * m / 2 + 3), Mesh::size_type(m));
   for(std::size_t i = 0; i < n; ++i)
   {
-    const Vertex v = mesh->add_vertex(Point(points[3 * i], points[3 * i + 1], points[3 * i + 2]));
+    const Vertex v = mesh.add_vertex(Point(points[3 * i], points[3 * i + 1], points[3 * i + 2]));
     if(std::size_t(v.idx()) != i)
       throw std::logic_error("cgal_heat_diffusion: Surface_mesh did not number the vertices as V");
   }
-  for(std::size_t f = 0; f < faces.size(); ++f)
+  for(std::size_t f = 0; f < m; ++f)
   {
-    const auto& t = faces[f];
-    if(mesh->add_face(Vertex(Mesh::size_type(t[0])), Vertex(Mesh::size_type(t[1])), Vertex(Mesh::size_type(t[2]))) ==
-       Mesh::null_face())
+    const std::uint32_t* t = &faces[3 * f];
+    if(mesh.add_face(Vertex(t[0]), Vertex(t[1]), Vertex(t[2])) == Mesh::null_face())
     {
       std::ostringstream os;
       os << "face " << f << " (vertices " << t[0] << ", " << t[1] << ", " << t[2]
@@ -186,7 +205,89 @@ std::unique_ptr<Mesh> make_mesh(py::handle V_object, py::handle F_object, const 
       invalid(function, os.str());
     }
   }
+}
+
+// The Surface_mesh of V and F (vertex i is row i of V, face f row f of F), built without
+// the GIL: in one pass when F is an oriented manifold, else face by face (which gives
+// the same mesh, or the error of the face that Surface_mesh refuses).
+std::unique_ptr<Mesh> make_mesh(py::handle V_object, py::handle F_object, const std::string& function)
+{
+  const py::array V = checked_array(V_object, function, "V");
+  const py::array F = checked_array(F_object, function, "F");
+  const double* points = vertex_array(V, function);
+  const std::size_t n = std::size_t(V.shape(0));
+  if(n >= std::size_t((std::numeric_limits<Mesh::size_type>::max)()))
+    invalid(function, "V has too many vertices for a Surface_mesh (32-bit indices)");
+  const std::vector<std::uint32_t> faces = face_array(F, n, function);
+  auto mesh = std::make_unique<Mesh>();
+  without_gil([&] {
+    if(!cgal_heat_diffusion_python::build_manifold_surface_mesh(points, n, faces.data(), faces.size() / 3, *mesh))
+      add_faces_one_by_one(points, n, faces, *mesh, function);
+  });
   return mesh;
+}
+
+// The connectivity of two Surface_meshes compared element by element; empty if equal,
+// else the first difference.
+std::string mesh_difference(const Mesh& a, const Mesh& b)
+{
+  std::ostringstream os;
+  if(a.num_vertices() != b.num_vertices() || a.num_halfedges() != b.num_halfedges() ||
+     a.num_faces() != b.num_faces() || a.has_garbage() || b.has_garbage())
+  {
+    os << "sizes: " << a.num_vertices() << " " << a.num_halfedges() << " " << a.num_faces() << " against "
+       << b.num_vertices() << " " << b.num_halfedges() << " " << b.num_faces();
+    return os.str();
+  }
+  for(Vertex v : a.vertices())
+    if(a.halfedge(v) != b.halfedge(v) || a.point(v) != b.point(v))
+    {
+      os << "vertex " << v.idx() << ": halfedge " << a.halfedge(v) << " against " << b.halfedge(v);
+      return os.str();
+    }
+  for(Mesh::Halfedge_index h : a.halfedges())
+    if(a.target(h) != b.target(h) || a.next(h) != b.next(h) || a.prev(h) != b.prev(h) || a.face(h) != b.face(h))
+    {
+      os << "halfedge " << h.idx() << ": target, next, prev, face " << a.target(h) << " " << a.next(h) << " "
+         << a.prev(h) << " " << a.face(h) << " against " << b.target(h) << " " << b.next(h) << " " << b.prev(h)
+         << " " << b.face(h);
+      return os.str();
+    }
+  for(Mesh::Face_index f : a.faces())
+    if(a.halfedge(f) != b.halfedge(f))
+    {
+      os << "face " << f.idx() << ": halfedge " << a.halfedge(f) << " against " << b.halfedge(f);
+      return os.str();
+    }
+  return std::string();
+}
+
+// For the tests: whether the one-pass construction applies to V and F, and if so, how
+// its mesh differs from the one add_face() builds face by face (None if in nothing, and
+// the mesh is valid).
+py::tuple compare_mesh_constructions(py::object V_object, py::object F_object)
+{
+  const std::string function = "_compare_mesh_constructions";
+  const py::array V = checked_array(V_object, function, "V");
+  const py::array F = checked_array(F_object, function, "F");
+  const double* points = vertex_array(V, function);
+  const std::size_t n = std::size_t(V.shape(0));
+  const std::vector<std::uint32_t> faces = face_array(F, n, function);
+  Mesh fast;
+  if(!cgal_heat_diffusion_python::build_manifold_surface_mesh(points, n, faces.data(), faces.size() / 3, fast))
+  {
+    if(fast.num_vertices() != 0 || fast.num_faces() != 0 || fast.num_halfedges() != 0)
+      return py::make_tuple(false, "declined, but the mesh is not left empty");
+    return py::make_tuple(false, py::none());
+  }
+  Mesh one_by_one;
+  add_faces_one_by_one(points, n, faces, one_by_one, function);
+  const std::string difference = mesh_difference(fast, one_by_one);
+  if(!difference.empty())
+    return py::make_tuple(true, difference);
+  if(!fast.is_valid(false))
+    return py::make_tuple(true, "the one-pass mesh is not valid (Surface_mesh::is_valid)");
+  return py::make_tuple(true, py::none());
 }
 
 // A field given by input vertex order: a 1-D float64 array of n values (finiteness
@@ -286,14 +387,6 @@ private:
   py::object user_;
   std::shared_ptr<py::error_already_set> error_;
 };
-
-// Runs `work` without the GIL (work that takes no progress callback).
-template <typename Work>
-auto without_gil(Work&& work) -> decltype(work())
-{
-  py::gil_scoped_release release;
-  return work();
-}
 
 // The diffusion options shared by every function that diffuses, named as the C++
 // named parameters and the tool's options: sigma, time, kernel ("local", "spectral" or
@@ -1002,4 +1095,7 @@ PYBIND11_MODULE(cgal_heat_diffusion, module)
              "New vertex positions (n, 3) whose NCC match the Normal Signature ns (eq. 23).");
   module.def("loop_subdivision", &loop_subdivision, py::arg("V"), py::arg("F"), py::arg("iterations") = 1,
              "(V, F) of the mesh Loop-subdivided `iterations` times.");
+  module.def("_compare_mesh_constructions", &compare_mesh_constructions, py::arg("V"), py::arg("F"),
+             "For the tests: (whether the one-pass Surface_mesh construction applies to V and F, how its mesh\n"
+             "differs from the one add_face() builds face by face: None if in nothing and valid).");
 }
