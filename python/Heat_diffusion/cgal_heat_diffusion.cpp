@@ -33,6 +33,7 @@
 #include <algorithm>
 #include <cmath>
 #include <cstdint>
+#include <cstring>
 #include <functional>
 #include <limits>
 #include <memory>
@@ -240,11 +241,22 @@ std::string mesh_difference(const Mesh& a, const Mesh& b)
     return os.str();
   }
   for(Vertex v : a.vertices())
-    if(a.halfedge(v) != b.halfedge(v) || a.point(v) != b.point(v))
+  {
+    if(a.halfedge(v) != b.halfedge(v))
     {
       os << "vertex " << v.idx() << ": halfedge " << a.halfedge(v) << " against " << b.halfedge(v);
       return os.str();
     }
+    for(int c = 0; c < 3; ++c)  // bit for bit (a NaN coordinate is kept as given)
+    {
+      const double x = a.point(v)[c], y = b.point(v)[c];
+      if(std::memcmp(&x, &y, sizeof(double)) != 0)
+      {
+        os << "vertex " << v.idx() << ": point " << a.point(v) << " against " << b.point(v);
+        return os.str();
+      }
+    }
+  }
   for(Mesh::Halfedge_index h : a.halfedges())
     if(a.target(h) != b.target(h) || a.next(h) != b.next(h) || a.prev(h) != b.prev(h) || a.face(h) != b.face(h))
     {
