@@ -63,13 +63,16 @@ bool build_manifold_surface_mesh(const double* points, std::size_t n, const std:
     ++bucket_begin[(a < b ? a : b) + 1];
   }
   std::partial_sum(bucket_begin.begin(), bucket_begin.end(), bucket_begin.begin());
-  std::vector<std::pair<std::uint32_t, std::uint32_t> > bucket(corners);  // (larger vertex, corner)
+  // (larger vertex, corner with the top bit set if it runs from the larger vertex)
+  const std::uint32_t downward = std::uint32_t(1) << 31;
+  std::vector<std::pair<std::uint32_t, std::uint32_t> > bucket(corners);
   {
     std::vector<std::uint32_t> fill(bucket_begin.begin(), bucket_begin.end() - 1);
     for(std::size_t c = 0; c < corners; ++c)
     {
       const std::uint32_t a = triangles[c], b = triangles[next_corner(c)];
-      bucket[fill[a < b ? a : b]++] = std::make_pair(a < b ? b : a, std::uint32_t(c));
+      bucket[fill[a < b ? a : b]++] =
+          a < b ? std::make_pair(b, std::uint32_t(c)) : std::make_pair(a, std::uint32_t(c) | downward);
     }
   }
   // partner[c]: the other corner of c's edge, or none (a border edge). Corners are
@@ -91,14 +94,14 @@ bool build_manifold_surface_mesh(const double* points, std::size_t n, const std:
         ++q;
       if(q - p > 2)
         return false;  // three or more faces on an edge
-      first[p->second] = 1;
+      first[p->second & ~downward] = 1;
       if(q - p == 2)
       {
         // Two faces must run along their edge in opposite directions.
-        if(triangles[p[0].second] == triangles[p[1].second])
+        if((p[0].second & downward) == (p[1].second & downward))
           return false;
-        partner[p[0].second] = p[1].second;
-        partner[p[1].second] = p[0].second;
+        partner[p[0].second & ~downward] = p[1].second & ~downward;
+        partner[p[1].second & ~downward] = p[0].second & ~downward;
       }
       p = q;
     }
@@ -134,13 +137,69 @@ bool build_manifold_surface_mesh(const double* points, std::size_t n, const std:
       border_in[to] = border;
     }
 
+  // One fan per vertex. Face (v, x, y) adds the link edge x -> y to v's link; with each
+  // halfedge in one face at most (checked above), a link is made of paths and cycles,
+  // and v is manifold if its link is one of them. Each link is walked within its own
+  // short list (bucketed by vertex), which stays in cache.
+  {
+    std::vector<std::uint32_t> link_begin(n + 1, 0);
+    for(std::size_t c = 0; c < corners; ++c)
+      ++link_begin[triangles[c] + 1];
+    std::partial_sum(link_begin.begin(), link_begin.end(), link_begin.begin());
+    std::vector<std::pair<std::uint32_t, std::uint32_t> > link(corners);
+    {
+      std::vector<std::uint32_t> fill(link_begin.begin(), link_begin.end() - 1);
+      for(std::size_t f = 0; f < m; ++f)
+      {
+        const std::uint32_t* t = triangles + 3 * f;
+        link[fill[t[0]]++] = std::make_pair(t[1], t[2]);
+        link[fill[t[1]]++] = std::make_pair(t[2], t[0]);
+        link[fill[t[2]]++] = std::make_pair(t[0], t[1]);
+      }
+    }
+    for(std::size_t v = 0; v < n; ++v)
+    {
+      const auto* begin = link.data() + link_begin[v];
+      const auto* end = link.data() + link_begin[v + 1];
+      if(begin == end)
+        continue;  // isolated: add_face() leaves it so too, and the package rejects it
+      // Forwards from the first link edge to the end of its path or around its cycle,
+      // then backwards to the start of the path (on a cycle, back at the last edge).
+      const std::size_t size = std::size_t(end - begin);
+      std::size_t visited = 1;
+      const auto* last = begin;
+      while(visited <= size)
+      {
+        const auto* successor = begin;
+        while(successor < end && successor->first != last->second)
+          ++successor;
+        if(successor == end || successor == begin)
+          break;
+        last = successor;
+        ++visited;
+      }
+      const auto* first_edge = begin;
+      while(visited <= size)
+      {
+        const auto* predecessor = begin;
+        while(predecessor < end && predecessor->second != first_edge->first)
+          ++predecessor;
+        if(predecessor == end || predecessor == last)
+          break;
+        first_edge = predecessor;
+        ++visited;
+      }
+      if(visited != size)
+        return false;
+    }
+  }
+
   mesh.resize(size_type(n), size_type(edges), size_type(m));
   for(std::size_t i = 0; i < n; ++i)
     mesh.point(Vertex(size_type(i))) = Point(points[3 * i], points[3 * i + 1], points[3 * i + 2]);
   // An interior vertex keeps the halfedge into it of its last face, which add_face()
   // leaves there when that face closes its fan; a border vertex has its border
   // halfedge, as add_face() adjusts it.
-  std::vector<std::uint32_t> incoming(n, 0);
   for(std::size_t f = 0; f < m; ++f)
   {
     const Face face{size_type(f)};
@@ -152,7 +211,6 @@ bool build_manifold_surface_mesh(const double* points, std::size_t n, const std:
       mesh.set_face(h, face);
       mesh.set_next(h, Halfedge(size_type(halfedge_of[d])));
       mesh.set_halfedge(Vertex(size_type(triangles[d])), h);
-      ++incoming[triangles[d]];
       if(partner[c] == none)
       {
         const Halfedge border(size_type(halfedge_of[c] ^ 1u));
@@ -167,29 +225,8 @@ bool build_manifold_surface_mesh(const double* points, std::size_t n, const std:
     {
       mesh.set_halfedge(Vertex(size_type(v)), Halfedge(size_type(border_in[v])));
       mesh.set_next(Halfedge(size_type(border_in[v])), Halfedge(size_type(border_out[v])));
-      ++incoming[v];
     }
 
-  // One fan per vertex: the cycle around each vertex meets all the halfedges into it
-  // (with at most one border halfedge, the cycles are the fans).
-  for(std::size_t v = 0; v < n; ++v)
-  {
-    const Halfedge start = mesh.halfedge(Vertex(size_type(v)));
-    if(start == Mesh::null_halfedge())
-      continue;  // isolated: add_face() leaves it so too, and the package rejects it
-    std::uint32_t count = 0;
-    Halfedge h = start;
-    do
-    {
-      ++count;
-      h = mesh.opposite(mesh.next(h));
-    } while(h != start && count <= incoming[v]);
-    if(count != incoming[v])
-    {
-      mesh.clear();
-      return false;
-    }
-  }
   return true;
 }
 
