@@ -409,8 +409,8 @@ struct Diffusion_options
   double sigma = 0.1;
   double time = 1.;
   HD::Heat_kernel_method method = HD::Heat_kernel_method::local;
-  std::size_t eigenpairs = 150;
-  long long coarse = -1;  // the package's automatic coarse level
+  long long eigenpairs = 150;  // checked by the package (number_of_eigenpairs must be positive)
+  long long coarse = -1;      // the package's automatic coarse level; the package checks the others
   bool scale_invariant = false;
   HD::Operator_normalization normalization = HD::Operator_normalization::balanced;
 };
@@ -462,19 +462,17 @@ Diffusion_options diffusion_options(const std::string& function, double sigma, d
   o.sigma = sigma;
   o.time = time;
   o.scale_invariant = scale_invariant;
+  // The values of m and coarse are the package's to check, with its messages; only a
+  // negative coarse is refused here: the package reads it as its automatic choice,
+  // which the Python caller asks for with None.
   if(!m.is_none())
-  {
-    const long long value = whole_number(m, function, "m");
-    if(value < 1)
-      invalid(function, "m (number_of_eigenpairs) must be at least 1, not " + std::to_string(value));
-    o.eigenpairs = std::size_t(value);
-  }
+    o.eigenpairs = whole_number(m, function, "m");
   if(!coarse.is_none())
   {
-    const long long value = whole_number(coarse, function, "coarse");
-    if(value < 0 || (value > 0 && value < 4))
-      invalid(function, "coarse (coarse_vertex_count) must be 0 (none) or at least 4, not " + std::to_string(value));
-    o.coarse = value;
+    o.coarse = whole_number(coarse, function, "coarse");
+    if(o.coarse < 0)
+      invalid(function, "coarse (coarse_vertex_count) must not be negative (None: the package's automatic "
+                        "choice), not " + std::to_string(o.coarse));
   }
   const bool eigenpairs_requested = !m.is_none() || !coarse.is_none() || scale_invariant;
   if(kernel.is_none())
