@@ -1,6 +1,7 @@
 # Installation: `cmake --install build --prefix P` installs the public headers
 # (include/CGAL/Heat_diffusion, internal/ included), the manual when it was built
-# (share/doc/CGAL_Heat_diffusion/html) and the CMake package config, so
+# (share/doc/CGAL_Heat_diffusion/html), the Python module when it is built
+# (python/Heat_diffusion/CMakeLists.txt) and the CMake package config, so
 # that a separate project can use
 #   find_package(CGAL_Heat_diffusion)
 #   target_link_libraries(my_program PRIVATE CGAL::Heat_diffusion)
@@ -69,6 +70,8 @@ if(CGAL_HEAT_DIFFUSION_TESTING)
                    "-DGENERATOR=${CMAKE_GENERATOR}"
                    "-DCXX_COMPILER=${CMAKE_CXX_COMPILER}"
                    "-DMESH=${CGAL_HEAT_DIFFUSION_DATA_DIR}/fandisk.off"
+                   "-DPYTHON=$<$<BOOL:${CGAL_HEAT_DIFFUSION_BUILD_PYTHON}>:${Python3_EXECUTABLE}>"
+                   "-DPYTHON_MODULE_DIR=${CGAL_HEAT_DIFFUSION_INSTALL_PYTHONDIR}"
                    -P "${CMAKE_CURRENT_LIST_DIR}/CGAL_Heat_diffusion_test_install.cmake")
   # Not while doc_heat_diffusion rewrites the manual's pages, which it installs.
   set_tests_properties(install_heat_diffusion PROPERTIES LABELS install TIMEOUT 900

@@ -38,6 +38,22 @@ foreach(f include/CGAL/Heat_diffusion.h
   endif()
 endforeach()
 
+# The Python module, when it is built: installed under the prefix, and imported from
+# there (not from the build tree) by the interpreter it was built for.
+if(PYTHON)
+  file(GLOB python_module "${prefix}/${PYTHON_MODULE_DIR}/cgal_heat_diffusion*")
+  if(NOT python_module)
+    message(FATAL_ERROR "install_heat_diffusion: the Python module was not installed into ${prefix}/${PYTHON_MODULE_DIR}")
+  endif()
+  run_step("import the installed Python module"
+    "${CMAKE_COMMAND}" -E env "PYTHONPATH=${prefix}/${PYTHON_MODULE_DIR}" PYTHONDONTWRITEBYTECODE=1
+    "${PYTHON}" -c "import os, sys, numpy as np, cgal_heat_diffusion as hd
+assert os.path.realpath(hd.__file__).startswith(os.path.realpath(sys.argv[1])), hd.__file__
+V = np.array([[0, 0, 0], [1, 0, 0], [0, 1, 0], [0, 0, 1]], dtype=np.float64)
+F = np.array([[0, 2, 1], [0, 1, 3], [0, 3, 2], [1, 2, 3]])
+assert np.all(np.isfinite(hd.normal_signature(V, F)))" "${prefix}")
+endif()
+
 set(generator_args "")
 if(GENERATOR)
   set(generator_args -G "${GENERATOR}")

@@ -3,14 +3,17 @@
 k steps from Python, against the same work timed inside the C++ tool (its --json
 timings 'ncc_and_local_operator' + 'diffusion': the NCC, A_t, the NS and F^k).
 
-Both run in fresh processes. The Python figure counts everything a Python user pays: the checks of V and F, the
-Surface_mesh built from them, the field copies and the reordering to the input's vertex
-order. The tool's figure excludes its file reading. Runs alternate (Python, C++); the
-overhead is given for the fastest run of each (the least disturbed by other work on the
-machine) and for the medians; the results are checked equal (1e-12) on the way.
+Both run in fresh processes. The Python figure counts everything a Python user pays: the
+checks of V and F, the Surface_mesh built from them, the field copies and the reordering
+to the input's vertex order. The tool's figure excludes its file reading (where it builds
+its Surface_mesh). Runs come in pairs, one of each, back to back, the first of the pair
+alternating (Python first, then C++ first), so that both see the same load on a shared
+machine. The overhead is given for the fastest run of each (the least disturbed), for the
+medians, and as the median of the pairs' ratios (each pair's two runs close in time); the
+results are checked equal (1e-12) on the way.
 
     PYTHONPATH=build/python /usr/bin/python3 benchmark/Heat_diffusion/benchmark_python.py \
-        --tool build/bin/heat_diffusion --data build/data/meshes [--repeat 5] [--levels 0,2]
+        --tool build/bin/heat_diffusion --data build/data/meshes [--repeat 5] [--levels 0,2] [--verbose]
 
 Meshes: fandisk, and armadillo Loop-subdivided twice (416,002 vertices), as the C++
 benchmarks make it (CGAL::Subdivision_method_3, here through the binding).
@@ -94,11 +97,13 @@ def main():
     parser.add_argument("--repeat", type=int, default=5)
     parser.add_argument("--levels", default="0,2", help="Loop subdivision levels of armadillo (0 = fandisk)")
     parser.add_argument("-k", type=int, default=10)
+    parser.add_argument("--verbose", action="store_true", help="print the times of every pair")
     args = parser.parse_args()
 
     print(f"Python binding overhead: HeatDiffusion + NS + {args.k} steps, local kernel, sigma 0.1, t 1; "
           f"{args.repeat} alternating runs of each")
-    print(f"{'mesh':>22} {'vertices':>9} {'Python s':>9} {'C++ s':>9} {'overhead':>9}   {'medians: Python, C++, overhead':>32}")
+    print(f"{'mesh':>22} {'vertices':>9} {'Python s':>9} {'C++ s':>9} {'overhead':>9}   "
+          f"{'medians: Python, C++, overhead':>32}   {'pairs':>8}")
     with tempfile.TemporaryDirectory() as work:
         for level in [int(x) for x in args.levels.split(",")]:
             if level == 0:
@@ -113,19 +118,25 @@ def main():
             np.save(V_path, V)
             np.save(F_path, F)
             python_times, tool_times = [], []
-            for _ in range(args.repeat):
-                seconds, field = python_run(V_path, F_path, args.k, work)
-                python_times.append(seconds)
-                seconds, ply = tool_run(args.tool, path, args.k, work)
-                tool_times.append(seconds)
+            for r in range(args.repeat):
+                for which in ((0, 1) if r % 2 == 0 else (1, 0)):
+                    if which == 0:
+                        seconds, field = python_run(V_path, F_path, args.k, work)
+                        python_times.append(seconds)
+                    else:
+                        seconds, ply = tool_run(args.tool, path, args.k, work)
+                        tool_times.append(seconds)
+                if args.verbose:
+                    print(f"  pair {r}: Python {python_times[-1]:.3f} s, C++ {tool_times[-1]:.3f} s")
             expected = ply_field(ply)
             difference = np.max(np.abs(field - expected)) / max(1.0, np.max(np.abs(expected)))
             if not difference <= 1e-12:
                 sys.exit(f"{name}: the Python result differs from the tool's by {difference:.3g}")
             p, c = min(python_times), min(tool_times)
             pm, cm = statistics.median(python_times), statistics.median(tool_times)
+            paired = statistics.median(x / y for x, y in zip(python_times, tool_times))
             print(f"{name:>22} {len(V):>9} {p:>9.3f} {c:>9.3f} {100 * (p / c - 1):>8.1f}%"
-                  f"   {pm:>10.3f} {cm:>10.3f} {100 * (pm / cm - 1):>8.1f}%")
+                  f"   {pm:>10.3f} {cm:>10.3f} {100 * (pm / cm - 1):>8.1f}%   {100 * (paired - 1):>8.1f}%")
             sys.stdout.flush()
 
 

@@ -26,11 +26,14 @@
 #include <CGAL/Heat_diffusion/normal_controlled_coordinates.h>
 #include <CGAL/Heat_diffusion/reconstruction.h>
 
+#include "surface_mesh_from_triangles.h"
+
 #include <Eigen/Sparse>
 
 #include <algorithm>
 #include <cmath>
 #include <cstdint>
+#include <cstring>
 #include <functional>
 #include <limits>
 #include <memory>
@@ -38,6 +41,7 @@
 #include <sstream>
 #include <stdexcept>
 #include <string>
+#include <type_traits>
 #include <utility>
 #include <vector>
 
@@ -58,6 +62,14 @@ typedef HD::Edge_weighted_heat_kernel<Mesh> Heat_kernel;
 [[noreturn]] void invalid(const std::string& function, const std::string& what)
 {
   throw std::invalid_argument("cgal_heat_diffusion." + function + ": " + what);
+}
+
+// Runs `work` without the GIL (work that takes no progress callback).
+template <typename Work>
+auto without_gil(Work&& work) -> decltype(work())
+{
+  py::gil_scoped_release release;
+  return work();
 }
 
 std::string type_name(py::handle object) { return py::str(py::type::handle_of(object).attr("__name__")); }
@@ -98,8 +110,44 @@ const double* vertex_array(const py::array& V, const std::string& function)
   return static_cast<const double*>(V.data());
 }
 
-// F as m x 3 vertex indices in [0, n), each face with three different vertices.
-std::vector<std::array<std::size_t, 3> > face_array(const py::array& F, std::size_t n, const std::string& function)
+// F as m x 3 vertex indices in [0, n), each face with three different vertices,
+// read as its integer type T (no widening through floating point).
+template <typename T>
+void read_faces(const py::array& F, std::size_t n, const std::string& function, std::vector<std::uint32_t>& faces)
+{
+  const T* in = static_cast<const T*>(F.data());
+  const std::size_t m = faces.size() / 3;
+  for(std::size_t f = 0; f < m; ++f)
+  {
+    for(std::size_t c = 0; c < 3; ++c)
+    {
+      const T i = in[3 * f + c];
+      bool out_of_range = false;
+      if constexpr(std::is_signed<T>::value)
+        out_of_range = i < 0 || static_cast<unsigned long long>(i) >= n;
+      else
+        out_of_range = static_cast<unsigned long long>(i) >= n;
+      if(out_of_range)
+      {
+        std::ostringstream os;
+        os << "F[" << f << "] refers to vertex " << +i << ", out of range [0, " << n << ")";
+        invalid(function, os.str());
+      }
+      faces[3 * f + c] = std::uint32_t(i);
+    }
+    const std::uint32_t* t = &faces[3 * f];
+    if(t[0] == t[1] || t[1] == t[2] || t[0] == t[2])
+    {
+      std::ostringstream os;
+      os << "face " << f << " (vertices " << t[0] << ", " << t[1] << ", " << t[2]
+         << ") is degenerate: it repeats a vertex";
+      invalid(function, os.str());
+    }
+  }
+}
+
+// F checked, as 3 m vertex indices (Surface_mesh numbers its vertices in 32 bits).
+std::vector<std::uint32_t> face_array(const py::array& F, std::size_t n, const std::string& function)
 {
   if(F.ndim() != 2 || F.shape(1) != 3)
     invalid(function, "F must have shape (m, 3) (triangles), not " + shape_text(F));
@@ -108,75 +156,47 @@ std::vector<std::array<std::size_t, 3> > face_array(const py::array& F, std::siz
   if(!((kind == 'i' || kind == 'u') && (size == 1 || size == 2 || size == 4 || size == 8)) ||
      !(F.dtype().attr("isnative").cast<bool>()))
     invalid(function, "F must be an array of integers (int32 or int64), not " + dtype_text(F));
-  const std::size_t m = std::size_t(F.shape(0));
-  auto index = [&](std::size_t k) -> long double {
-    const char* p = static_cast<const char*>(F.data()) + k * std::size_t(size);
-    if(kind == 'i')
-      switch(size)
-      {
-      case 1: return *reinterpret_cast<const std::int8_t*>(p);
-      case 2: return *reinterpret_cast<const std::int16_t*>(p);
-      case 4: return *reinterpret_cast<const std::int32_t*>(p);
-      default: return (long double)(*reinterpret_cast<const std::int64_t*>(p));
-      }
+  std::vector<std::uint32_t> faces(3 * std::size_t(F.shape(0)));
+  if(kind == 'i')
     switch(size)
     {
-    case 1: return *reinterpret_cast<const std::uint8_t*>(p);
-    case 2: return *reinterpret_cast<const std::uint16_t*>(p);
-    case 4: return *reinterpret_cast<const std::uint32_t*>(p);
-    default: return (long double)(*reinterpret_cast<const std::uint64_t*>(p));
+    case 1: read_faces<std::int8_t>(F, n, function, faces); break;
+    case 2: read_faces<std::int16_t>(F, n, function, faces); break;
+    case 4: read_faces<std::int32_t>(F, n, function, faces); break;
+    default: read_faces<std::int64_t>(F, n, function, faces); break;
     }
-  };
-  std::vector<std::array<std::size_t, 3> > faces(m);
-  for(std::size_t f = 0; f < m; ++f)
-  {
-    for(std::size_t c = 0; c < 3; ++c)
+  else
+    switch(size)
     {
-      const long double i = index(3 * f + c);
-      if(i < 0 || i >= (long double)n)
-      {
-        std::ostringstream os;
-        os << "F[" << f << "] refers to vertex " << (long long)i << ", out of range [0, " << n << ")";
-        invalid(function, os.str());
-      }
-      faces[f][c] = std::size_t(i);
+    case 1: read_faces<std::uint8_t>(F, n, function, faces); break;
+    case 2: read_faces<std::uint16_t>(F, n, function, faces); break;
+    case 4: read_faces<std::uint32_t>(F, n, function, faces); break;
+    default: read_faces<std::uint64_t>(F, n, function, faces); break;
     }
-    if(faces[f][0] == faces[f][1] || faces[f][1] == faces[f][2] || faces[f][0] == faces[f][2])
-    {
-      std::ostringstream os;
-      os << "face " << f << " (vertices " << faces[f][0] << ", " << faces[f][1] << ", " << faces[f][2]
-         << ") is degenerate: it repeats a vertex";
-      invalid(function, os.str());
-    }
-  }
   return faces;
 }
 
-// The Surface_mesh of V and F: vertex i is row i of V (checked), face f is row f of F.
-// Surface_mesh refuses a face that would make an edge non-manifold (three faces, or two
-// faces that run along it in the same direction); the package itself rejects what the
-// halfedge structure can hold but it cannot process (non-manifold vertices, isolated
-// vertices, zero-area faces, non-finite coordinates).
-std::unique_ptr<Mesh> make_mesh(py::handle V_object, py::handle F_object, const std::string& function)
+// The Surface_mesh of V and F face by face, as add_face() builds it: vertex i is row i
+// of V (checked), face f is row f of F. Surface_mesh refuses a face that would make an
+// edge non-manifold (three faces, or two faces that run along it in the same
+// direction); the package itself rejects what the halfedge structure can hold but it
+// cannot process (non-manifold vertices, isolated vertices, zero-area faces,
+// non-finite coordinates).
+void add_faces_one_by_one(const double* points, std::size_t n, const std::vector<std::uint32_t>& faces, Mesh& mesh,
+                          const std::string& function)
 {
-  const py::array V = checked_array(V_object, function, "V");
-  const py::array F = checked_array(F_object, function, "F");
-  const double* points = vertex_array(V, function);
-  const std::size_t n = std::size_t(V.shape(0));
-  const std::vector<std::array<std::size_t, 3> > faces = face_array(F, n, function);
-  auto mesh = std::make_unique<Mesh>();
-  mesh->reserve(Mesh::size_type(n), Mesh::size_type(3 * faces.size() / 2 + 3), Mesh::size_type(faces.size()));
+  const std::size_t m = faces.size() / 3;
+  mesh.reserve(Mesh::size_type(n), Mesh::size_type(3 * m / 2 + 3), Mesh::size_type(m));
   for(std::size_t i = 0; i < n; ++i)
   {
-    const Vertex v = mesh->add_vertex(Point(points[3 * i], points[3 * i + 1], points[3 * i + 2]));
+    const Vertex v = mesh.add_vertex(Point(points[3 * i], points[3 * i + 1], points[3 * i + 2]));
     if(std::size_t(v.idx()) != i)
       throw std::logic_error("cgal_heat_diffusion: Surface_mesh did not number the vertices as V");
   }
-  for(std::size_t f = 0; f < faces.size(); ++f)
+  for(std::size_t f = 0; f < m; ++f)
   {
-    const auto& t = faces[f];
-    if(mesh->add_face(Vertex(Mesh::size_type(t[0])), Vertex(Mesh::size_type(t[1])), Vertex(Mesh::size_type(t[2]))) ==
-       Mesh::null_face())
+    const std::uint32_t* t = &faces[3 * f];
+    if(mesh.add_face(Vertex(t[0]), Vertex(t[1]), Vertex(t[2])) == Mesh::null_face())
     {
       std::ostringstream os;
       os << "face " << f << " (vertices " << t[0] << ", " << t[1] << ", " << t[2]
@@ -186,7 +206,100 @@ std::unique_ptr<Mesh> make_mesh(py::handle V_object, py::handle F_object, const 
       invalid(function, os.str());
     }
   }
+}
+
+// The Surface_mesh of V and F (vertex i is row i of V, face f row f of F), built without
+// the GIL: in one pass when F is an oriented manifold, else face by face (which gives
+// the same mesh, or the error of the face that Surface_mesh refuses).
+std::unique_ptr<Mesh> make_mesh(py::handle V_object, py::handle F_object, const std::string& function)
+{
+  const py::array V = checked_array(V_object, function, "V");
+  const py::array F = checked_array(F_object, function, "F");
+  const double* points = vertex_array(V, function);
+  const std::size_t n = std::size_t(V.shape(0));
+  if(n >= std::size_t((std::numeric_limits<Mesh::size_type>::max)()))
+    invalid(function, "V has too many vertices for a Surface_mesh (32-bit indices)");
+  const std::vector<std::uint32_t> faces = face_array(F, n, function);
+  auto mesh = std::make_unique<Mesh>();
+  without_gil([&] {
+    if(!cgal_heat_diffusion_python::build_manifold_surface_mesh(points, n, faces.data(), faces.size() / 3, *mesh))
+      add_faces_one_by_one(points, n, faces, *mesh, function);
+  });
   return mesh;
+}
+
+// The connectivity of two Surface_meshes compared element by element; empty if equal,
+// else the first difference.
+std::string mesh_difference(const Mesh& a, const Mesh& b)
+{
+  std::ostringstream os;
+  if(a.num_vertices() != b.num_vertices() || a.num_halfedges() != b.num_halfedges() ||
+     a.num_faces() != b.num_faces() || a.has_garbage() || b.has_garbage())
+  {
+    os << "sizes: " << a.num_vertices() << " " << a.num_halfedges() << " " << a.num_faces() << " against "
+       << b.num_vertices() << " " << b.num_halfedges() << " " << b.num_faces();
+    return os.str();
+  }
+  for(Vertex v : a.vertices())
+  {
+    if(a.halfedge(v) != b.halfedge(v))
+    {
+      os << "vertex " << v.idx() << ": halfedge " << a.halfedge(v) << " against " << b.halfedge(v);
+      return os.str();
+    }
+    for(int c = 0; c < 3; ++c)  // bit for bit (a NaN coordinate is kept as given)
+    {
+      const double x = a.point(v)[c], y = b.point(v)[c];
+      if(std::memcmp(&x, &y, sizeof(double)) != 0)
+      {
+        os << "vertex " << v.idx() << ": point " << a.point(v) << " against " << b.point(v);
+        return os.str();
+      }
+    }
+  }
+  for(Mesh::Halfedge_index h : a.halfedges())
+    if(a.target(h) != b.target(h) || a.next(h) != b.next(h) || a.prev(h) != b.prev(h) || a.face(h) != b.face(h))
+    {
+      os << "halfedge " << h.idx() << ": target, next, prev, face " << a.target(h) << " " << a.next(h) << " "
+         << a.prev(h) << " " << a.face(h) << " against " << b.target(h) << " " << b.next(h) << " " << b.prev(h)
+         << " " << b.face(h);
+      return os.str();
+    }
+  for(Mesh::Face_index f : a.faces())
+    if(a.halfedge(f) != b.halfedge(f))
+    {
+      os << "face " << f.idx() << ": halfedge " << a.halfedge(f) << " against " << b.halfedge(f);
+      return os.str();
+    }
+  return std::string();
+}
+
+// For the tests: whether the one-pass construction applies to V and F, and if so, how
+// its mesh differs from the one add_face() builds face by face (None if in nothing, and
+// the mesh is valid).
+py::tuple compare_mesh_constructions(py::object V_object, py::object F_object)
+{
+  const std::string function = "_compare_mesh_constructions";
+  const py::array V = checked_array(V_object, function, "V");
+  const py::array F = checked_array(F_object, function, "F");
+  const double* points = vertex_array(V, function);
+  const std::size_t n = std::size_t(V.shape(0));
+  const std::vector<std::uint32_t> faces = face_array(F, n, function);
+  Mesh fast;
+  if(!cgal_heat_diffusion_python::build_manifold_surface_mesh(points, n, faces.data(), faces.size() / 3, fast))
+  {
+    if(fast.num_vertices() != 0 || fast.num_faces() != 0 || fast.num_halfedges() != 0)
+      return py::make_tuple(false, "declined, but the mesh is not left empty");
+    return py::make_tuple(false, py::none());
+  }
+  Mesh one_by_one;
+  add_faces_one_by_one(points, n, faces, one_by_one, function);
+  const std::string difference = mesh_difference(fast, one_by_one);
+  if(!difference.empty())
+    return py::make_tuple(true, difference);
+  if(!fast.is_valid(false))
+    return py::make_tuple(true, "the one-pass mesh is not valid (Surface_mesh::is_valid)");
+  return py::make_tuple(true, py::none());
 }
 
 // A field given by input vertex order: a 1-D float64 array of n values (finiteness
@@ -287,14 +400,6 @@ private:
   std::shared_ptr<py::error_already_set> error_;
 };
 
-// Runs `work` without the GIL (work that takes no progress callback).
-template <typename Work>
-auto without_gil(Work&& work) -> decltype(work())
-{
-  py::gil_scoped_release release;
-  return work();
-}
-
 // The diffusion options shared by every function that diffuses, named as the C++
 // named parameters and the tool's options: sigma, time, kernel ("local", "spectral" or
 // None: local unless m or coarse is given, the package's Heat_kernel_method::automatic),
@@ -304,8 +409,8 @@ struct Diffusion_options
   double sigma = 0.1;
   double time = 1.;
   HD::Heat_kernel_method method = HD::Heat_kernel_method::local;
-  std::size_t eigenpairs = 150;
-  long long coarse = -1;  // the package's automatic coarse level
+  long long eigenpairs = 150;  // checked by the package (number_of_eigenpairs must be positive)
+  long long coarse = -1;      // the package's automatic coarse level; the package checks the others
   bool scale_invariant = false;
   HD::Operator_normalization normalization = HD::Operator_normalization::balanced;
 };
@@ -357,19 +462,17 @@ Diffusion_options diffusion_options(const std::string& function, double sigma, d
   o.sigma = sigma;
   o.time = time;
   o.scale_invariant = scale_invariant;
+  // The values of m and coarse are the package's to check, with its messages; only a
+  // negative coarse is refused here: the package reads it as its automatic choice,
+  // which the Python caller asks for with None.
   if(!m.is_none())
-  {
-    const long long value = whole_number(m, function, "m");
-    if(value < 1)
-      invalid(function, "m (number_of_eigenpairs) must be at least 1, not " + std::to_string(value));
-    o.eigenpairs = std::size_t(value);
-  }
+    o.eigenpairs = whole_number(m, function, "m");
   if(!coarse.is_none())
   {
-    const long long value = whole_number(coarse, function, "coarse");
-    if(value < 0 || (value > 0 && value < 4))
-      invalid(function, "coarse (coarse_vertex_count) must be 0 (none) or at least 4, not " + std::to_string(value));
-    o.coarse = value;
+    o.coarse = whole_number(coarse, function, "coarse");
+    if(o.coarse < 0)
+      invalid(function, "coarse (coarse_vertex_count) must not be negative (None: the package's automatic "
+                        "choice), not " + std::to_string(o.coarse));
   }
   const bool eigenpairs_requested = !m.is_none() || !coarse.is_none() || scale_invariant;
   if(kernel.is_none())
@@ -1002,4 +1105,7 @@ PYBIND11_MODULE(cgal_heat_diffusion, module)
              "New vertex positions (n, 3) whose NCC match the Normal Signature ns (eq. 23).");
   module.def("loop_subdivision", &loop_subdivision, py::arg("V"), py::arg("F"), py::arg("iterations") = 1,
              "(V, F) of the mesh Loop-subdivided `iterations` times.");
+  module.def("_compare_mesh_constructions", &compare_mesh_constructions, py::arg("V"), py::arg("F"),
+             "For the tests: (whether the one-pass Surface_mesh construction applies to V and F, how its mesh\n"
+             "differs from the one add_face() builds face by face: None if in nothing and valid).");
 }
