@@ -663,39 +663,14 @@ public:
     return result;
   }
 
-  // F^k for every k of `steps` (package order), a few steps at a time without the GIL,
-  // checking for signals in between: Ctrl-C stops a long diffusion, which takes no
-  // progress callback. The steps are the same products in the same order as one
-  // diffuse() call: the same bits.
+  // F^k for every k of `steps` (package order), in one pass without the GIL; Ctrl-C
+  // cancels it between two steps (through the package's progress callback).
   std::vector<Eigen::VectorXd> interruptible_diffusion(const Eigen::VectorXd& f0,
                                                        const std::vector<std::size_t>& steps) const
   {
-    constexpr std::size_t steps_between_checks = 16;
-    std::vector<std::size_t> stops(steps);
-    std::sort(stops.begin(), stops.end());
-    stops.erase(std::unique(stops.begin(), stops.end()), stops.end());
-    // The package checks the field in its first diffuse() call; with no step to make,
-    // none would come.
-    if(stops.empty() || stops.back() == 0)
-      diffusion_->diffuse(f0, std::size_t(0));
-    std::vector<Eigen::VectorXd> result(steps.size());
-    Eigen::VectorXd current = f0;
-    std::size_t k = 0;
-    for(std::size_t stop : stops)
-    {
-      while(k < stop)
-      {
-        const std::size_t count = (std::min)(steps_between_checks, stop - k);
-        current = without_gil([&] { return diffusion_->diffuse(current, count); });
-        k += count;
-        if(PyErr_CheckSignals() != 0)
-          throw py::error_already_set();
-      }
-      for(std::size_t s = 0; s < steps.size(); ++s)
-        if(steps[s] == stop)
-          result[s] = current;
-    }
-    return result;
+    Python_progress guard{py::none()};
+    const std::function<bool(double)> callback = guard.callback();
+    return guard.run([&] { return diffusion_->diffuse(f0, steps, HD::parameters::progress_callback(callback)); });
   }
 
   // A_t in the input's vertex order, as scipy.sparse.csc_matrix (sorted row indices).
