@@ -18,6 +18,8 @@
 #include <CGAL/boost/graph/IO/PLY.h>
 #include <CGAL/boost/graph/IO/STL.h>
 
+#include "fast_mesh_input.h"
+
 #include <unistd.h>
 
 #include <algorithm>
@@ -693,7 +695,8 @@ std::size_t read_triangle_mesh(const std::string& path, Mesh& mesh)
   std::string extension = fs::path(path).extension().string();
   std::transform(extension.begin(), extension.end(), extension.begin(),
                  [](unsigned char ch) { return char(std::tolower(ch)); });
-  if(extension == ".off" || extension == ".ply")
+  const bool fast = fast_input::read_mesh_fast(path, mesh);  // declines what it does not read
+  if(!fast && (extension == ".off" || extension == ".ply"))
   {
     std::ifstream is(path, std::ios::binary);
     try
@@ -708,10 +711,10 @@ std::size_t read_triangle_mesh(const std::string& path, Mesh& mesh)
       throw Input_error(path + ": " + e.what());
     }
   }
-  bool read = false;
+  bool read = fast;
   try
   {
-    read = CGAL::IO::read_polygon_mesh(path, mesh);
+    read = read || CGAL::IO::read_polygon_mesh(path, mesh);
   }
   catch(const std::exception& e)  // std::bad_alloc, CGAL's assertions
   {
