@@ -61,22 +61,6 @@ bool read_with_cgal(const std::string& path, Mesh& mesh)
   return CGAL::IO::read_polygon_mesh(path, mesh);
 }
 
-// Same vertices (bit-identical coordinates, same order), same faces (same vertex
-// cycles, same order), same halfedge of each vertex (the circulation start).
-bool identical(const Mesh& a, const Mesh& b)
-{
-  if(a.number_of_vertices() != b.number_of_vertices() || a.number_of_faces() != b.number_of_faces() ||
-     a.number_of_halfedges() != b.number_of_halfedges())
-    return false;
-  for(auto v : a.vertices())
-    if(std::memcmp(&a.point(v), &b.point(v), sizeof(a.point(v))) != 0 || a.halfedge(v) != b.halfedge(v))
-      return false;
-  for(auto h : a.halfedges())
-    if(a.next(h) != b.next(h) || a.target(h) != b.target(h) || a.face(h) != b.face(h))
-      return false;
-  return true;
-}
-
 // The figures of one run of the tool.
 struct Tool_run
 {
@@ -188,7 +172,7 @@ int main(int argc, char** argv)
       start = std::chrono::steady_clock::now();
       const bool cgal_read = read_with_cgal(file, b);
       cgal.push_back(seconds_since(start));
-      same = same && fast_read && cgal_read && identical(a, b);
+      same = same && fast_read && cgal_read && cli::fast_input::identical_meshes(a, b);
       n = b.number_of_vertices();
     }
     std::printf("  reading %zu vertices (median of %d):  fast %.2f s,  CGAL's reader (with the pre-check) %.2f s,"

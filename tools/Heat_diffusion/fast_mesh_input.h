@@ -46,10 +46,8 @@ inline bool read_soup(const std::string& path, Soup& soup)
     parse = &parse_obj;
   else
     return false;
-  std::vector<char> data;
-  if(!load_file(path, data))
-    return false;
-  return parse(data.data(), data.data() + data.size(), soup);
+  const File_in_memory file(path);
+  return file.ok() && parse(file.begin(), file.end(), soup);
 }
 
 template <typename Mesh>

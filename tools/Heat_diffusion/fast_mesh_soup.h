@@ -16,6 +16,11 @@
 #include <CGAL/boost/graph/Euler_operations.h>
 #include <CGAL/boost/graph/helpers.h>
 
+#include <fcntl.h>
+#include <sys/mman.h>
+#include <sys/stat.h>
+#include <unistd.h>
+
 #include <charconv>
 #include <cmath>
 #include <cstdint>
@@ -29,19 +34,53 @@
 namespace heat_diffusion_cli {
 namespace fast_input {
 
-// The whole file in one buffer: one read, no stream per token.
-inline bool load_file(const std::string& path, std::vector<char>& data)
+// The whole file in memory: mapped (the page cache's pages, nothing to copy or to
+// clear), or else read in one call. No stream per token.
+class File_in_memory
 {
-  std::ifstream is(path, std::ios::binary | std::ios::ate);
-  if(!is)
-    return false;
-  const std::streamoff size = is.tellg();
-  if(size < 0)
-    return false;
-  data.resize(std::size_t(size));
-  is.seekg(0);
-  return size == 0 || bool(is.read(data.data(), size));
-}
+public:
+  File_in_memory(const File_in_memory&) = delete;
+  File_in_memory& operator=(const File_in_memory&) = delete;
+  explicit File_in_memory(const std::string& path)
+  {
+    const int fd = ::open(path.c_str(), O_RDONLY);
+    if(fd < 0)
+      return;
+    struct stat st;
+    if(::fstat(fd, &st) == 0 && S_ISREG(st.st_mode) && st.st_size > 0)
+    {
+      size_ = std::size_t(st.st_size);
+      void* p = ::mmap(nullptr, size_, PROT_READ, MAP_PRIVATE | MAP_POPULATE, fd, 0);
+      if(p != MAP_FAILED)
+      {
+        mapped_ = p;
+        data_ = static_cast<const char*>(p);
+      }
+      else
+      {
+        std::ifstream is(path, std::ios::binary);
+        copy_.resize(size_);
+        if(is.read(copy_.data(), std::streamsize(size_)))
+          data_ = copy_.data();
+      }
+    }
+    ::close(fd);
+  }
+  ~File_in_memory()
+  {
+    if(mapped_)
+      ::munmap(mapped_, size_);
+  }
+  bool ok() const { return data_ != nullptr; }
+  const char* begin() const { return data_; }
+  const char* end() const { return data_ + size_; }
+
+private:
+  void* mapped_ = nullptr;
+  const char* data_ = nullptr;
+  std::size_t size_ = 0;
+  std::vector<char> copy_;
+};
 
 // The points and the polygons of a file: polygon f has the vertex indices
 // indices[starts[f]] to indices[starts[f + 1]] - 1.
@@ -168,6 +207,33 @@ bool build_mesh(const Soup& soup, Mesh& mesh)
     mesh.clear();
     return false;
   }
+  return true;
+}
+
+// What the fast readers promise, for the tests, the fuzz target and the benchmark: the
+// same vertices (bit-identical points, same order), the same faces and halfedges
+// (same indices, same next, target and face of each halfedge), the same halfedge of
+// each vertex (where circulations start), and the same property maps.
+template <typename Mesh>
+bool identical_meshes(const Mesh& a, const Mesh& b)
+{
+  if(a.number_of_vertices() != b.number_of_vertices() || a.number_of_faces() != b.number_of_faces() ||
+     a.number_of_halfedges() != b.number_of_halfedges() || a.has_garbage() || b.has_garbage())
+    return false;
+  typedef typename Mesh::Vertex_index Vertex_index;
+  typedef typename Mesh::Face_index Face_index;
+  if(a.template properties<Vertex_index>() != b.template properties<Vertex_index>() ||
+     a.template properties<Face_index>() != b.template properties<Face_index>())
+    return false;
+  for(auto v : a.vertices())
+    if(std::memcmp(&a.point(v), &b.point(v), sizeof(a.point(v))) != 0 || a.halfedge(v) != b.halfedge(v))
+      return false;
+  for(auto h : a.halfedges())
+    if(a.next(h) != b.next(h) || a.target(h) != b.target(h) || a.face(h) != b.face(h))
+      return false;
+  for(auto f : a.faces())
+    if(a.halfedge(f) != b.halfedge(f))
+      return false;
   return true;
 }
 
