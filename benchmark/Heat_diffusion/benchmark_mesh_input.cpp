@@ -71,9 +71,11 @@ struct Tool_run
 
 const char* const stage_names[5] = {"read", "ncc_and_local_operator", "diffusion", "features", "write"};
 
-double json_number(const std::string& text, const std::string& key)
+// A number of the object "timings_ms" (the summary has a "features" member too).
+double json_timing(const std::string& text, const std::string& key)
 {
-  const std::size_t at = text.find("\"" + key + "\":");
+  const std::size_t timings = text.find("\"timings_ms\":");
+  const std::size_t at = timings == std::string::npos ? timings : text.find("\"" + key + "\":", timings);
   return at == std::string::npos ? -1 : std::atof(text.c_str() + at + key.size() + 3);
 }
 
@@ -91,7 +93,7 @@ Tool_run run_tool(const std::string& tool, const std::string& input, const std::
   tbuf << ts.rdbuf();
   const std::string j = jbuf.str(), t = tbuf.str();
   for(int s = 0; s < 5; ++s)
-    run.stages[s] = json_number(j, stage_names[s]) / 1000;
+    run.stages[s] = json_timing(j, stage_names[s]) / 1000;
   // "Elapsed (wall clock) time (h:mm:ss or m:ss): 0:31.42"
   const std::size_t w = t.find("Elapsed (wall clock) time");
   if(w != std::string::npos)
