@@ -18,7 +18,9 @@
 #include <CGAL/Heat_diffusion/reconstruction.h>
 
 #include <CGAL/Exact_predicates_inexact_constructions_kernel.h>
+#include <CGAL/IO/OBJ.h>
 #include <CGAL/IO/OFF.h>
+#include <CGAL/IO/PLY.h>
 #include <CGAL/Polyhedron_3.h>
 #include <CGAL/Polyhedron_items_with_id_3.h>
 #include <CGAL/Polygon_mesh_processing/triangulate_faces.h>
@@ -30,6 +32,7 @@
 #include <CGAL/boost/graph/copy_face_graph.h>
 #include <CGAL/boost/graph/generators.h>
 
+#include "mesh_input.h"  // the tool's reading: its pre-checks and its fast reader
 #include "test_support.h"
 
 #include <boost/property_map/property_map.hpp>
@@ -37,6 +40,8 @@
 #include <algorithm>
 #include <array>
 #include <cmath>
+#include <cstdint>
+#include <filesystem>
 #include <fstream>
 #include <limits>
 #include <map>
@@ -326,6 +331,246 @@ void check_corpus()
                  std::invalid_argument, c.error);
   }
 }
+
+// The tool's fast reader (tools/Heat_diffusion/fast_mesh_input.h) against what the
+// tool did before it, the pre-check and CGAL::IO::read_polygon_mesh: on what it reads,
+// the identical mesh; everything else, and every hostile file, it leaves to them.
+namespace fast_reader {
+
+namespace fi = heat_diffusion_cli::fast_input;
+
+std::string scratch(const std::string& name)
+{
+  const std::filesystem::path dir = std::filesystem::temp_directory_path() / "test_hostile_input_fast_reader";
+  std::filesystem::create_directories(dir);
+  return (dir / name).string();
+}
+
+void write_text(const std::string& path, const std::string& text)
+{
+  std::ofstream os(path, std::ios::binary);
+  os << text;
+}
+
+// The tool's reading before the fast reader: true if the file passes the pre-check
+// and CGAL's reader reads it.
+bool read_like_before(const std::string& path, Mesh& mesh)
+{
+  const std::string extension = std::filesystem::path(path).extension().string();
+  std::ifstream is(path, std::ios::binary);
+  try
+  {
+    if(extension == ".off")
+      heat_diffusion_cli::check_off_stream(is, std::filesystem::file_size(path));
+    else if(extension == ".ply")
+      heat_diffusion_cli::check_ply_stream(is, std::filesystem::file_size(path));
+    return CGAL::IO::read_polygon_mesh(path, mesh);
+  }
+  catch(const std::exception&)
+  {
+    return false;
+  }
+}
+
+// The fast reader reads `path`, to the mesh CGAL's reader gives.
+void check_reads_identically(const std::string& path)
+{
+  Mesh fast, before;
+  const bool fast_read = fi::read_mesh_fast(path, fast);
+  CHECK_MESSAGE(fast_read, path << ": the fast reader declined");
+  CHECK_MESSAGE(read_like_before(path, before), path << ": CGAL's reader failed");
+  CHECK_MESSAGE(fast_read && fi::identical_meshes(fast, before), path << ": the meshes differ");
+}
+
+// The fast reader leaves `path` to the pre-check and CGAL's reader: it declines,
+// with the mesh left empty.
+void check_declines(const std::string& path)
+{
+  Mesh fast;
+  CHECK_MESSAGE(!fi::read_mesh_fast(path, fast) && is_empty(fast), path << ": the fast reader did not decline");
+}
+
+void put_big_endian(std::string& s, std::uint32_t u)
+{
+  for(int shift = 24; shift >= 0; shift -= 8)
+    s += char((u >> shift) & 0xff);
+}
+
+// `mesh` as binary OFF (big-endian float32 coordinates, int32 sizes and indices).
+std::string binary_off(const Mesh& mesh)
+{
+  std::string s = "OFF BINARY\n";
+  put_big_endian(s, std::uint32_t(mesh.number_of_vertices()));
+  put_big_endian(s, std::uint32_t(mesh.number_of_faces()));
+  put_big_endian(s, 0);
+  for(Vertex v : mesh.vertices())
+    for(int k = 0; k < 3; ++k)
+    {
+      const float x = float(mesh.point(v)[k]);
+      std::uint32_t u;
+      std::memcpy(&u, &x, 4);
+      put_big_endian(s, u);
+    }
+  for(auto f : mesh.faces())
+  {
+    put_big_endian(s, std::uint32_t(mesh.degree(f)));
+    for(Vertex v : vertices_around_face(mesh.halfedge(f), mesh))
+      put_big_endian(s, std::uint32_t(v.idx()));
+  }
+  return s;
+}
+
+void check_meshes()
+{
+  // Real meshes in each format, written by CGAL's writers with all digits.
+  for(const std::string name : {"fandisk.off", "armadillo.off"})
+  {
+    const std::string path = test_support::data_path(name);
+    check_reads_identically(path);
+    Mesh mesh;
+    CHECK(CGAL::IO::read_polygon_mesh(path, mesh));
+    const std::string stem = scratch(name.substr(0, name.size() - 4));
+    {
+      std::ofstream os(stem + "_binary.ply", std::ios::binary);
+      CGAL::IO::set_binary_mode(os);
+      CHECK(CGAL::IO::write_PLY(os, mesh));
+    }
+    {
+      std::ofstream os(stem + "_ascii.ply");
+      CHECK(CGAL::IO::write_PLY(os, mesh, CGAL::parameters::stream_precision(17)));
+    }
+    CHECK(CGAL::IO::write_OBJ(stem + ".obj", mesh, CGAL::parameters::stream_precision(17)));
+    write_text(stem + "_binary.off", binary_off(mesh));
+    for(const std::string suffix : {"_binary.ply", "_ascii.ply", ".obj", "_binary.off"})
+      check_reads_identically(stem + suffix);
+  }
+  // The variants the readers accept beyond what CGAL writes.
+  write_text(scratch("comments_crlf.off"),
+             "# a comment line\r\nOFF\r\n# another\r\n5 5 0\r\n0 0 0\r\n1 0 0\r\n1 1 0\r\n0 1 0\r\n\r\n0.5 0.5 1\r\n"
+             "4 3 2 1 0\r\n3 0 1 4\r\n3 1 2 4\r\n3 2 3 4\r\n3 3 0 4\r\n");
+  write_text(scratch("slashes.obj"), "# pyramid\r\nmtllib x.mtl\no pyramid\nv 0 0 0\nv 1 0 0\nv 1 1 0 0.5 0.5 0.5\n"
+                                     "v 0 1 0\nv 0.5 0.5 1\nvn 0 0 1\nvt 0 0\ns off\nf 4/1/1 3/1/1 2/1/1 1/1/1\n"
+                                     "f 1//1 2//1 5//1\nf 2/1 3/1 5/1\r\nf  3 4 5 \nf 4 1 5\n");
+  write_text(scratch("float_colours.ply"),
+             "ply\nformat ascii 1.0\ncomment colours are dropped\nelement vertex 5\nproperty float x\nproperty float y\n"
+             "property float z\nproperty uchar red\nproperty uchar green\nproperty uchar blue\nelement face 5\n"
+             "property list uchar uint vertex_index\nend_header\n0 0 0 255 0 0\n1 0 0 0 255 0\n1 1 0 0 0 255\n"
+             "0.1 1 0 9 9 9\n0.5 0.5 1.3 1 2 3\n4 3 2 1 0\n3 0 1 4\n3 1 2 4\n3 2 3 4\n3 3 0 4\n");
+  {
+    // big-endian, float32 coordinates between other properties, int16 list lengths
+    std::string s = "ply\r\nformat binary_big_endian 1.0\r\nelement vertex 5\r\nproperty float x\r\n"
+                    "property int16 quality\r\nproperty float y\r\nproperty float z\r\nelement face 5\r\n"
+                    "property list short int vertex_indices\r\nend_header\n";
+    const float points[5][3] = {{0, 0, 0}, {1, 0, 0}, {1, 1, 0}, {0, 1, 0}, {0.5f, 0.5f, 1.1f}};
+    for(const auto& p : points)
+      for(int k = 0; k < 3; ++k)
+      {
+        std::uint32_t u;
+        std::memcpy(&u, &p[k], 4);
+        put_big_endian(s, u);
+        if(k == 0)
+          s += std::string("\x01\x02", 2);
+      }
+    const int faces[5][4] = {{3, 2, 1, 0}, {0, 1, 4, -1}, {1, 2, 4, -1}, {2, 3, 4, -1}, {3, 0, 4, -1}};
+    for(const auto& f : faces)
+    {
+      const int k = f[3] < 0 ? 3 : 4;
+      s += char(0);
+      s += char(k);
+      for(int j = 0; j < k; ++j)
+        put_big_endian(s, std::uint32_t(f[j]));
+    }
+    write_text(scratch("big_endian.ply"), s);
+  }
+  for(const std::string name : {"comments_crlf.off", "slashes.obj", "float_colours.ply", "big_endian.ply"})
+    check_reads_identically(scratch(name));
+  // What they leave to CGAL's reader, valid or not: it reads the same as before.
+  write_text(scratch("colours.off"), "COFF\n3 1 0\n0 0 0 255 0 0\n1 0 0 0 255 0\n0 1 0 0 0 255\n3 0 1 2\n");
+  write_text(scratch("relative.obj"), "v 0 0 0\nv 1 0 0\nv 0 1 0\nf -3 -2 -1\n");
+  write_text(scratch("tabs.obj"), "v 0 0 0\nv 1 0 0\nv 0 1 0\nf\t1\t2\t3\n");
+  write_text(scratch("edges.ply"), "ply\nformat ascii 1.0\nelement vertex 3\nproperty float x\nproperty float y\n"
+                                   "property float z\nelement face 1\nproperty list uchar int vertex_indices\n"
+                                   "element edge 0\nproperty int vertex1\nend_header\n0 0 0\n1 0 0\n0 1 0\n3 0 1 2\n");
+  write_text(scratch("inner_comment.off"), "OFF\n3 1 0\n0 0 0\n# here\n1 0 0\n0 1 0\n3 0 1 2\n");
+  write_text(scratch("extra_number.off"), "OFF\n3 1 0\n0 0 0 1\n1 0 0\n0 1 0\n3 0 1 2\n");
+  for(const std::string name : {"colours.off", "relative.obj", "tabs.obj", "edges.ply", "inner_comment.off",
+                                "extra_number.off"})
+  {
+    check_declines(scratch(name));
+    Mesh mesh;
+    if(read_like_before(scratch(name), mesh))
+    {
+      // and the tool's reading, which falls back on it, gives CGAL's mesh
+      Mesh tool;
+      heat_diffusion_cli::read_triangle_mesh(scratch(name), tool);
+      CHECK_MESSAGE(fi::identical_meshes(tool, mesh), name << ": the tool's mesh differs from CGAL's");
+    }
+  }
+}
+
+// Every file of the hostile corpus, and broken PLY and OBJ files: what the fast reader
+// accepts, the pre-check and CGAL's reader accept, to the same mesh; what they reject,
+// it declines. Files it declines although they are valid go the old way: also fine.
+void check_hostile()
+{
+  std::size_t accepted = 0, files = 0;
+  for(const auto& entry : std::filesystem::directory_iterator(CGAL_HEAT_DIFFUSION_HOSTILE_DATA_DIR))
+  {
+    const std::string path = entry.path().string();
+    Mesh fast, before;
+    const bool fast_read = fi::read_mesh_fast(path, fast), read = read_like_before(path, before);
+    CHECK_MESSAGE(!fast_read || (read && fi::identical_meshes(fast, before)),
+                  path << ": the fast reader accepts what the tool rejected, or reads it differently");
+    accepted += fast_read ? 1 : 0;
+    ++files;
+  }
+  // the well-formed meshes of the corpus are read fast (most of it: not a vacuous check)
+  for(const std::string name : {"octahedron.off", "needle.off", "hole.off", "quad_faces.off", "pillow.off",
+                                "tiny_coordinates.off", "three_components.off"})
+    check_reads_identically(corpus_path(name));
+  CHECK_MESSAGE(accepted >= 7 && accepted < files, accepted << " of " << files << " corpus files read fast");
+  for(const std::string name : {"nan_coordinate.off", "inf_coordinate.off", "overflow_coordinate.off", "truncated.off",
+                                "huge_counts.off", "huge_counts.ply", "huge_face_size.off", "huge_face_size_ascii.ply",
+                                "huge_face_size_binary.ply", "index_out_of_range.off", "negative_index.off",
+                                "fractional_index.off", "garbage.off", "header_only.off", "empty.off",
+                                "nonmanifold_edge.off", "nonmanifold_vertex.off", "bad_color.off", "missing_normal.off"})
+    check_declines(corpus_path(name));
+
+  // broken PLY and OBJ files
+  const std::string header = "ply\nformat ascii 1.0\nelement vertex 3\nproperty float x\nproperty float y\n"
+                             "property float z\nelement face 1\nproperty list uchar int vertex_indices\nend_header\n";
+  const std::string vertices = "0 0 0\n1 0 0\n0 1 0\n";
+  const std::vector<std::pair<std::string, std::string>> broken = {
+      {"index.ply", header + vertices + "3 0 1 3\n"},
+      {"negative.ply", header + vertices + "3 0 -1 2\n"},
+      {"short_face.ply", header + vertices + "2 0 1\n"},
+      {"truncated.ply", header + vertices + "3 0 1"},
+      {"nan.ply", header + "0 0 0\nnan 0 0\n0 1 0\n3 0 1 2\n"},
+      {"overflow.ply", header + "0 0 0\n1e39 0 0\n0 1 0\n3 0 1 2\n"},
+      {"length.ply", header + vertices + "300 0 1 2\n"},
+      {"no_z.ply", "ply\nformat ascii 1.0\nelement vertex 3\nproperty float x\nproperty float y\nelement face 1\n"
+                   "property list uchar int vertex_indices\nend_header\n0 0\n1 0\n0 1\n3 0 1 2\n"},
+      {"binary_truncated.ply", "ply\nformat binary_little_endian 1.0\nelement vertex 3\nproperty float x\n"
+                               "property float y\nproperty float z\nelement face 1\n"
+                               "property list uchar int vertex_indices\nend_header\n" + std::string(30, '\0')},
+      {"index.obj", "v 0 0 0\nv 1 0 0\nv 0 1 0\nf 1 2 4\n"},
+      {"zero.obj", "v 0 0 0\nv 1 0 0\nv 0 1 0\nf 0 1 2\n"},
+      {"nan.obj", "v 0 0 0\nv nan 0 0\nv 0 1 0\nf 1 2 3\n"},
+      {"short.obj", "v 0 0 0\nv 1 0 0\nv 0 1 0\nf 1 2\n"},
+      {"unknown.obj", "v 0 0 0\nv 1 0 0\nv 0 1 0\nf 1 2 3\nbogus 1\n"},
+      {"repeated.obj", "v 0 0 0\nv 1 0 0\nv 0 1 0\nf 1 2 2\n"},
+      {"binary_index.off", "OFF BINARY\n" + std::string("\0\0\0\3\0\0\0\1\0\0\0\0", 12) + std::string(36, '\0') +
+                               std::string("\0\0\0\3\0\0\0\0\0\0\0\1\0\0\0\3", 16)},
+      {"binary_truncated.off", "OFF BINARY\n" + std::string("\0\0\0\3\0\0\0\1\0\0\0\0", 12) + std::string(20, '\0')},
+  };
+  for(const auto& file : broken)
+  {
+    write_text(scratch(file.first), file.second);
+    check_declines(scratch(file.first));
+  }
+}
+
+}  // namespace fast_reader
 
 // Non-manifold polygon soups: not a polygon mesh as they are; the documented repair
 // (PMP::orient_polygon_soup duplicates non-manifold vertices and edges) gives a mesh
@@ -819,6 +1064,8 @@ int main()
   try
   {
     check_corpus();
+    fast_reader::check_meshes();
+    fast_reader::check_hostile();
     check_polygon_soups();
     check_extreme_scales();
     check_built_meshes();

@@ -7,6 +7,7 @@
 #define CGAL_HEAT_DIFFUSION_TOOLS_MESH_INPUT_H
 
 #include "cli_errors.h"
+#include "fast_mesh_input.h"
 #include "mesh_input_checks.h"
 
 #include <CGAL/Exact_predicates_inexact_constructions_kernel.h>
@@ -40,7 +41,8 @@ std::size_t read_triangle_mesh(const std::string& path, Mesh& mesh)
   std::string extension = fs::path(path).extension().string();
   std::transform(extension.begin(), extension.end(), extension.begin(),
                  [](unsigned char ch) { return char(std::tolower(ch)); });
-  if(extension == ".off" || extension == ".ply")
+  const bool fast = fast_input::read_mesh_fast(path, mesh);  // declines what it does not read
+  if(!fast && (extension == ".off" || extension == ".ply"))
   {
     std::ifstream is(path, std::ios::binary);
     try
@@ -55,10 +57,10 @@ std::size_t read_triangle_mesh(const std::string& path, Mesh& mesh)
       throw Input_error(path + ": " + e.what());
     }
   }
-  bool read = false;
+  bool read = fast;
   try
   {
-    read = CGAL::IO::read_polygon_mesh(path, mesh);
+    read = read || CGAL::IO::read_polygon_mesh(path, mesh);
   }
   catch(const std::exception& e)  // std::bad_alloc, CGAL's assertions
   {

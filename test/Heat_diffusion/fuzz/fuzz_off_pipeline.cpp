@@ -1,7 +1,8 @@
 // Copyright (c) 2026 The CGAL Heat_diffusion developers.
 // SPDX-License-Identifier: LGPL-3.0-or-later
 //
-// libFuzzer target: arbitrary bytes as an OFF file, through the tool's reading path
+// libFuzzer target: arbitrary bytes as an OFF file, through the tool's fast reader
+// (compared with the pre-check and CGAL's reader), the tool's reading path
 // (check_off_stream, CGAL's polygon soup reader, repair, orientation, triangulation)
 // and the API user's (CGAL::IO::read_OFF into a Surface_mesh), then NCC, the
 // reconstruction, a small heat kernel (m <= 10), diffusion and feature detection,
@@ -176,6 +177,29 @@ extern "C" int LLVMFuzzerTestOneInput(const std::uint8_t* data, std::size_t size
     return 0;
   const std::string text(reinterpret_cast<const char*>(data), size);
   const Parameters p = parameters_of(data, size);
+
+  // The tool's fast OFF reader reads a subset of what the pre-check and CGAL's reader
+  // accept, to the identical mesh: what it accepts, they must accept.
+  {
+    namespace fi = heat_diffusion_cli::fast_input;
+    fi::Soup soup;
+    Mesh fast;
+    if(fi::parse_off(text.data(), text.data() + text.size(), soup) && fi::build_mesh(soup, fast))
+    {
+      std::istringstream is(text), again(text);
+      try
+      {
+        heat_diffusion_cli::check_off_stream(is, size);
+      }
+      catch(const heat_diffusion_cli::Input_error& e)
+      {
+        bug(std::string("the fast reader accepts what the pre-check rejects: ") + e.what());
+      }
+      Mesh cgal;
+      require(CGAL::IO::read_OFF(again, cgal), "the fast reader accepts what CGAL's reader rejects");
+      require(fi::identical_meshes(fast, cgal), "the fast reader's mesh differs from CGAL's");
+    }
+  }
 
   // CGAL's OFF reader is unsafe on hostile files (huge allocations, unchecked
   // conversions); the tool checks the file first, and so does this target.
