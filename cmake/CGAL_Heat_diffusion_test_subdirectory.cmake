@@ -5,7 +5,8 @@
 #     package's tests, OFF would switch off those of a parent that includes CTest
 #     later), no build type (the consumer is configured without one);
 #   - it adds no tool, example, test, benchmark, manual or mesh data to the parent's
-#     build tree: only the target CGAL::Heat_diffusion (the consumer builds and runs);
+#     build tree: only the target CGAL::Heat_diffusion (the consumer builds and runs;
+#     the optional library CGAL::Heat_diffusion_compiled is not built unless linked);
 #   - in a parent that includes CTest, before or after adding the package, the
 #     parent's test is the only one.
 # Usage: cmake -DSOURCE_DIR=... -DCONSUMER_SOURCE_DIR=... -DWORK_DIR=... [-DGENERATOR=...]
@@ -81,7 +82,8 @@ endif()
 # Builds everything the parent's build builds: the consumer only.
 run_step("build the consumer" "${CMAKE_COMMAND}" --build "${build}")
 file(GLOB_RECURSE built_programs LIST_DIRECTORIES false
-     "${build}/heat_diffusion" "${build}/*_example" "${build}/test_*" "${build}/benchmark_*")
+     "${build}/heat_diffusion" "${build}/*_example" "${build}/test_*" "${build}/benchmark_*"
+     "${build}/*Heat_diffusion_compiled.a")
 foreach(f IN LISTS built_programs)
   if(NOT IS_DIRECTORY "${f}" AND NOT f MATCHES "\\.(cmake|txt|make|o|d|marks|includecache|internal|json)$")
     problem("the parent's build made a program of the package: ${f}")
