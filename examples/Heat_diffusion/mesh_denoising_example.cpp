@@ -24,14 +24,13 @@ int main(int argc, char** argv)
     return EXIT_FAILURE;
   }
 
-  // The default method diffuses the face normals with anisotropic edge weights and
-  // fits the vertices to them, until the vertices have moved as far as the noise
-  // level estimated from the Normal Signature times `displacement_limit` (default 1.1;
-  // smaller keeps more of the input's shape on smooth, coarsely meshed surfaces).
-  // The package's parameters and CGAL's own can be merged in any order.
-  const double limit = argc > 2 ? std::atof(argv[2]) : 1.1;
+  // The default method filters the face normals with anisotropic weights and fits the
+  // vertices to them, until the vertices have moved as far as the noise level it
+  // estimates, times `displacement_limit` (default 1; smaller keeps more of the input's
+  // shape). The package's parameters and CGAL's own can be merged in any order.
+  const double limit = argc > 2 ? std::atof(argv[2]) : 1.;
   HD::denoise_mesh(mesh, HD::parameters::combine(HD::parameters::displacement_limit(limit),
-                                                 CGAL::parameters::number_of_iterations(100)));
+                                                 CGAL::parameters::number_of_iterations(40)));
 
   // The paper's own pipeline (eq. 22-23: the Normal Signature diffused with the
   // edge-weighted heat kernel, then the least-squares reconstruction) is
