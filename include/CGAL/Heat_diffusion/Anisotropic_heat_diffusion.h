@@ -170,7 +170,7 @@ public:
     : method_(internal::resolve_kernel_method<NamedParameters>(parameters::choose_parameter(
           parameters::get_parameter(np, internal_np::kernel_method), Heat_kernel_method::automatic),
           parameters::choose_parameter(parameters::get_parameter(np, internal_np::scale_invariant_kernel), false))),
-      normalization_(checked_normalization(parameters::choose_parameter(
+      diffusion_operator_(checked_normalization(parameters::choose_parameter(
           parameters::get_parameter(np, internal_np::operator_normalization), Operator_normalization::balanced)))
   {
     using parameters::choose_parameter;
@@ -231,7 +231,7 @@ public:
   Anisotropic_heat_diffusion(const Heat_kernel& kernel, double t,
                              const NamedParameters& np = parameters::default_values())
     : kernel_(&kernel), ncc_(&kernel.normal_controlled_coordinates()), method_(Heat_kernel_method::spectral),
-      normalization_(checked_normalization(parameters::choose_parameter(
+      diffusion_operator_(checked_normalization(parameters::choose_parameter(
           parameters::get_parameter(np, internal_np::operator_normalization), Operator_normalization::balanced)))
   {
     build_spectral(checked_time(t), internal::Progress(parameters::choose_parameter(
@@ -264,7 +264,7 @@ public:
   /// The number of vertices.
   std::size_t number_of_vertices() const { return ncc_->indexed_mesh().number_of_vertices(); }
   /// How \f$ A_t \f$ was made from the kernel.
-  Operator_normalization operator_normalization() const { return normalization_; }
+  Operator_normalization operator_normalization() const { return diffusion_operator_.normalization(); }
   /// \f$ A_t \f$: doubly stochastic and symmetric (`Operator_normalization::balanced`) or
   /// column-stochastic (`Operator_normalization::columns`); rows and columns follow
   /// `vertex_index()`. The diffusion keeps \f$ A_t \f$ in its own layout only; this
@@ -385,13 +385,12 @@ private:
         columns.psi.col(k) *= std::exp(-0.5 * kernel_->decay_rate(std::size_t(k)) * t);
       build_from_columns(columns, order, std::vector<std::size_t>(), progress);
     };
-    const bool relative = kernel_->is_scale_invariant();
-    const Eigen::VectorXd* mass_diagonal = relative ? &kernel_->mass_diagonal() : nullptr;
+    const Eigen::VectorXd* mass_diagonal = kernel_->is_scale_invariant() ? &kernel_->mass_diagonal() : nullptr;
     if(kernel_->coarse_eigenvectors().size() > 0)
       build(internal::Coarse_spectral_columns{kernel_->coarse_eigenvectors(), &kernel_->coarse_prolongation(),
-                                              mass_diagonal, relative});
+                                              mass_diagonal});
     else
-      build(internal::Spectral_columns{kernel_->eigenvectors(), mass_diagonal, relative});
+      build(internal::Spectral_columns{kernel_->eigenvectors(), mass_diagonal});
   }
 
   void build_local(double t, const internal::Heat_operators& operators, const internal::Progress& progress)
@@ -409,8 +408,7 @@ private:
   void build_from_columns(const Columns& columns, const std::vector<std::size_t>& order,
                           const std::vector<std::size_t>& group_begin, const internal::Progress& progress)
   {
-    const bool balanced = normalization_ == Operator_normalization::balanced;
-    diffusion_operator_ = internal::Diffusion_operator(normalization_);
+    const bool balanced = diffusion_operator_.is_balanced();
     const internal::Heat_region_options options{threshold(), maximum_region_size, !balanced, spectral_group_size};
     Eigen::VectorXd column_sums, peaks;
     // (the balancing takes a few products with K: a small part of the whole)
@@ -445,7 +443,6 @@ private:
   std::shared_ptr<const NCC> owned_ncc_;             // local
   const NCC* ncc_ = nullptr;
   Heat_kernel_method method_ = Heat_kernel_method::spectral;
-  Operator_normalization normalization_ = Operator_normalization::balanced;
   double time_ = 1.;
   internal::Diffusion_operator diffusion_operator_;  // A_t
   std::shared_ptr<Column_major_copy> column_major_ = std::make_shared<Column_major_copy>();

@@ -26,7 +26,7 @@ namespace internal {
 
 struct Heat_region_options
 {
-  double threshold;                 // tau(t): absolute, or relative to the peak (Columns::relative)
+  double threshold;                 // tau(t): absolute, or relative to the peak (Columns::relative())
   std::size_t maximum_region_size;  // regions stop growing at this many vertices
   bool normalize_columns;           // the paper's A_t (columns sum to 1); else the kernel values are kept
   std::size_t group_size;           // the groups of sources when `group_begin` is empty
@@ -106,7 +106,7 @@ void build_heat_regions(const Columns& kernel, const Indexed_mesh& mesh, const s
       auto h = [&](std::size_t i) { return kernel(j, i, s.kernel_workspace); };
       ++s.generation;
       const double peak = h(j);
-      const double tau = kernel.relative ? options.threshold * peak : options.threshold;
+      const double tau = kernel.relative() ? options.threshold * peak : options.threshold;
       auto& column = columns[position];
       column.clear();
       column.emplace_back(j, peak);

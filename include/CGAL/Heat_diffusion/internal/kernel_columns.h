@@ -24,7 +24,7 @@ namespace internal {
 //   Workspace make_workspace() const
 //   void prepare(std::size_t j, Workspace&) const    before the values of column j
 //   double operator()(std::size_t j, std::size_t i, Workspace&) const    h_t(j, i)
-//   bool relative                           the threshold is relative to the peak h_t(j, j)
+//   bool relative() const                   the threshold is relative to the peak h_t(j, j)
 //                                           (eq. 14's kernel) rather than absolute
 // prepare() may do the work of a whole group of sources (the local kernel's clusters):
 // the sources come group after group.
@@ -45,8 +45,8 @@ struct Spectral_columns
   struct Workspace {};
   Eigen::Matrix<double, Eigen::Dynamic, Eigen::Dynamic, Eigen::RowMajor> psi;
   const Eigen::VectorXd* mass_diagonal;  // eq. 14, or null
-  bool relative;
 
+  bool relative() const { return mass_diagonal != nullptr; }
   Workspace make_workspace() const { return Workspace(); }
   void prepare(std::size_t, Workspace&) const {}
   double operator()(std::size_t j, std::size_t i, Workspace&) const
@@ -72,8 +72,8 @@ struct Coarse_spectral_columns
   Eigen::Matrix<double, Eigen::Dynamic, Eigen::Dynamic, Eigen::RowMajor> psi;  // coarse x m
   const Eigen::SparseMatrix<double, Eigen::RowMajor>* prolongation;
   const Eigen::VectorXd* mass_diagonal;  // eq. 14, or null
-  bool relative;
 
+  bool relative() const { return mass_diagonal != nullptr; }
   Workspace make_workspace() const
   {
     Workspace w;
@@ -113,8 +113,9 @@ struct Coarse_spectral_columns
 struct Local_columns
 {
   typedef Local_heat_kernel::Workspace Workspace;
-  static constexpr bool relative = false;  // the absolute threshold
   const Local_heat_kernel& kernel;
+
+  static constexpr bool relative() { return false; }  // the absolute threshold
 
   Workspace make_workspace() const { return kernel.make_workspace(); }
   void prepare(std::size_t j, Workspace& w) const { kernel.compute_column(j, w); }
