@@ -561,6 +561,9 @@ void check_hostile()
       {"repeated.obj", "v 0 0 0\nv 1 0 0\nv 0 1 0\nf 1 2 2\n"},
       {"binary_index.off", "OFF BINARY\n" + std::string("\0\0\0\3\0\0\0\1\0\0\0\0", 12) + std::string(36, '\0') +
                                std::string("\0\0\0\3\0\0\0\0\0\0\0\1\0\0\0\3", 16)},
+      // a keyword that only starts with BINARY: the counts after it are not read as ASCII
+      {"binary_prefix.off", "OFF\nBINARY4 4 0\n0 0 0\n1 0 0\n0 1 0\n0 0 1\n3 0 2 1\n3 0 1 3\n3 0 3 2\n"
+                            "3 1 2 3\n"},
       {"binary_truncated.off", "OFF BINARY\n" + std::string("\0\0\0\3\0\0\0\1\0\0\0\0", 12) + std::string(20, '\0')},
   };
   for(const auto& file : broken)

@@ -159,13 +159,19 @@ struct Cursor
     p = r.ptr;
     return token_ends();
   }
+  // The keyword `w` as a whole token. Unlike the scanners above, it moves on only when
+  // it matches: a caller tries one keyword after another ("BINARY5" is not "BINARY").
   bool word(const char* w)
   {
     const std::size_t n = std::strlen(w);
     if(std::size_t(end - p) < n || std::memcmp(p, w, n) != 0)
       return false;
+    const char* const start = p;
     p += n;
-    return token_ends();
+    if(token_ends())
+      return true;
+    p = start;
+    return false;
   }
 };
 
