@@ -581,6 +581,17 @@ void check_shape_filter_defaults()
     Mesh enhanced = mesh, smoothed = mesh;
     HD::filter_shape(enhanced, std::vector<double>{1., 3., 3.});
     HD::filter_shape(smoothed, std::vector<double>{0., 0., 1.});
+    if(std::string(name) == "fandisk.off")
+    {
+      // the defaults are those the tool's enhance states and passes explicitly
+      Mesh explicit_defaults = mesh;
+      HD::filter_shape(explicit_defaults, std::vector<double>{1., 3., 3.},
+                       HD::parameters::combine(HD::parameters::steps_per_level(2), HD::parameters::anchor_weight(0.03)));
+      bool same = true;
+      for(Vertex v : mesh.vertices())
+        same = same && explicit_defaults.point(v) == enhanced.point(v);
+      CHECK_MESSAGE(same, name << ": filter_shape's defaults are not 2 steps per level and anchor weight 0.03");
+    }
     double moved = 0;
     for(Vertex v : mesh.vertices())
       moved = (std::max)(moved, std::sqrt(CGAL::to_double(CGAL::squared_distance(mesh.point(v), enhanced.point(v)))));

@@ -402,7 +402,7 @@ void check_special_cases()
                std::invalid_argument, "number_of_steps must not be negative");
   in[*mesh.vertices().begin()] = std::numeric_limits<double>::quiet_NaN();
   CHECK_THROWS(Diffusion(small, 1.).diffuse(boost::make_assoc_property_map(in), boost::make_assoc_property_map(out), 3),
-               std::invalid_argument, "is not finite");
+               std::invalid_argument, "the field value at vertex 0 is nan, not a finite number");
   // a progress callback is called, and cancelling throws
   int calls = 0;
   const Kernel watched(mesh, HD::parameters::combine(HD::parameters::number_of_eigenpairs(20),

@@ -27,6 +27,7 @@
 #include <CGAL/boost/graph/Euler_operations.h>
 #include <CGAL/Polygon_mesh_processing/orient_polygon_soup.h>
 #include <CGAL/Polygon_mesh_processing/polygon_soup_to_polygon_mesh.h>
+#include <CGAL/Polygon_mesh_processing/repair_polygon_soup.h>
 #include <CGAL/Subdivision_method_3/subdivision_methods_3.h>
 #include <CGAL/Surface_mesh.h>
 #include <CGAL/boost/graph/copy_face_graph.h>
@@ -675,6 +676,43 @@ void check_built_meshes()
     CHECK_MESSAGE(worst <= 1e-9, "NS at 1e-310 differ from the octahedron's by " << worst);
     check_accepted_mesh(mesh, "coordinates of 1e-310");
   }
+  // Broken halfedge structures: an error that says so, never an endless circulation.
+  {
+    // next() of a halfedge of face 0 leads into a face whose cycle never comes back
+    Mesh mesh;
+    CHECK(read_mesh("octahedron.off", mesh));
+    const auto h = halfedge(*faces(mesh).begin(), mesh);
+    for(auto f : faces(mesh))
+    {
+      bool touches = false;
+      for(auto g : halfedges_around_face(halfedge(f, mesh), mesh))
+        for(auto e : halfedges_around_face(h, mesh))
+          touches = touches || g == e || g == opposite(e, mesh);
+      if(!touches)
+      {
+        mesh.set_next(h, halfedge(f, mesh));
+        break;
+      }
+    }
+    CHECK_THROWS(HD::Normal_controlled_coordinates<Mesh>{mesh}, std::invalid_argument,
+                 "the halfedges around face 0 do not form a cycle");
+    // PMP::triangulate_faces() on the non-planar faces of this soup (found by fuzzing)
+    // leaves faces whose triangles are cycles but whose vertices' halfedges are not
+    std::vector<Point> points;
+    std::vector<std::vector<std::size_t> > polygons;
+    std::ifstream is(corpus_path("broken_by_triangulation.off"));
+    CHECK(CGAL::IO::read_OFF(is, points, polygons));
+    PMP::repair_polygon_soup(points, polygons);
+    CHECK(PMP::orient_polygon_soup(points, polygons));
+    Mesh triangulated;
+    PMP::polygon_soup_to_polygon_mesh(points, polygons, triangulated);
+    PMP::triangulate_faces(triangulated);
+    if(CGAL::is_valid_polygon_mesh(triangulated))
+      check_accepted_mesh(triangulated, "broken_by_triangulation.off, triangulated");  // a fixed CGAL
+    else
+      CHECK_THROWS(HD::Normal_controlled_coordinates<Mesh>{triangulated}, std::invalid_argument,
+                   "do not form a cycle: the halfedge structure is broken");
+  }
   // A face that is tiny next to the rest of the mesh has zero area in double.
   CHECK_THROWS(HD::Normal_controlled_coordinates<Mesh>{triangle_pair(Point(-1.5e308, 1.7e308, 1e308))},
                std::invalid_argument, "face 0 (vertices 0, 1, 2) has zero area");
@@ -775,11 +813,11 @@ void check_parameters()
   {
     Eigen::VectorXd f = Eigen::VectorXd::Ones(Eigen::Index(n));
     f[3] = bad;
-    CHECK_THROWS(diffusion.diffuse(f, 2), std::invalid_argument, "field value at vertex 3 is not finite");
+    CHECK_THROWS(diffusion.diffuse(f, 2), std::invalid_argument, "Anisotropic_heat_diffusion: the field value at vertex 3 is");
     std::map<Vertex, double> bad_values = values;
     bad_values[Vertex(5)] = bad;
     CHECK_THROWS(HD::reconstruct_from_normal_signature(mesh, boost::make_assoc_property_map(bad_values)),
-                 std::invalid_argument, "normal signature of vertex 5 is not finite");
+                 std::invalid_argument, "reconstruct_from_normal_signature: the normal signature at vertex 5 is");
     CHECK_THROWS(HD::detect_multiscale_features(diffusion, boost::make_assoc_property_map(bad_values), {0, 1}),
                  std::invalid_argument, "detect_multiscale_features");
   }

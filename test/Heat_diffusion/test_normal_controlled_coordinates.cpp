@@ -425,7 +425,7 @@ void check_bad_input()
                  std::invalid_argument, "anchor_weight must be positive");
     ns[*mesh.vertices().begin()] = std::numeric_limits<double>::quiet_NaN();
     CHECK_THROWS(HD::reconstruct_from_normal_signature(mesh, boost::make_assoc_property_map(ns)),
-                 std::invalid_argument, "normal signature of vertex 0 is not finite");
+                 std::invalid_argument, "normal signature at vertex 0 is nan, not a finite number");
   }
 }
 

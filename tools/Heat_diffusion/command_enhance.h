@@ -105,7 +105,6 @@ inline Command enhance_command()
     const Diffusion_options& o = r.diffusion;
     const std::vector<double> weights = parse_weights(r.args.value("--weights", "1,3,3"));
     const Steps_per_level steps_per_level = parse_steps_per_level(r.args, o);
-    const bool anchor_weight_given = r.args.has("--anchor-weight");
     const double anchor_weight = parse_number("--anchor-weight", r.args.value("--anchor-weight", "0.03"), 0., true);
     const std::string output = r.args.value("-o", default_output(r.input, "_enhanced.off"));
     mesh_format(output);
@@ -116,16 +115,15 @@ inline Command enhance_command()
     const Mesh original = mesh;
     const double input_variance = for_input(r.input, [&] { return normal_signature_variance(mesh); });
     r.timer.stop("ncc");
-    // filter_shape() gets the steps per level and the anchor weight only if given: its
-    // own defaults apply otherwise.
+    // filter_shape() always gets the steps per level and the anchor weight, with its own
+    // defaults when they are not given (test_applications checks that they are its
+    // defaults): one instantiation of it, not one per combination of options given.
     Progress_bar progress("eigen solve", !r.quiet);
     for_input(r.input, [&] {
       with_diffusion_parameters(o, progress, [&](const auto& np) {
-        with_parameter_if(steps_per_level.given, np, HD::parameters::steps_per_level(steps_per_level.value),
-                          [&](const auto& np2) {
-          with_parameter_if(anchor_weight_given, np2, HD::parameters::anchor_weight(anchor_weight),
-                            [&](const auto& np3) { HD::filter_shape(mesh, weights, np3); });
-        });
+        HD::filter_shape(mesh, weights,
+                         HD::parameters::combine(np, HD::parameters::steps_per_level(steps_per_level.value),
+                                                 HD::parameters::anchor_weight(anchor_weight)));
       });
     });
     progress.finish();

@@ -44,16 +44,6 @@ auto with_diffusion_parameters(const Diffusion_options& o, Progress_bar& progres
   return f(HD::parameters::combine(np, HD::parameters::coarse_vertex_count(std::size_t(o.coarse))));
 }
 
-// Calls `f` with `np`, plus `parameter` if `given`: otherwise the package's default applies.
-template <typename NamedParameters, typename Parameter, typename Function>
-void with_parameter_if(bool given, const NamedParameters& np, const Parameter& parameter, Function&& f)
-{
-  if(given)
-    f(HD::parameters::combine(np, parameter));
-  else
-    f(np);
-}
-
 // The spectral kernel of `mesh`, with a progress bar; errors name the input file.
 inline std::unique_ptr<Heat_kernel> make_heat_kernel(const Mesh& mesh, const Diffusion_options& o,
                                                      const std::string& input,

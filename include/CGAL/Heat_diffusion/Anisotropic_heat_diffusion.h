@@ -15,6 +15,7 @@
 #include <CGAL/Heat_diffusion/internal/kernel_columns.h>
 #include <CGAL/Heat_diffusion/internal/local_heat_kernel.h>
 #include <CGAL/Heat_diffusion/internal/progress.h>
+#include <CGAL/Heat_diffusion/internal/vertex_fields.h>
 #include <CGAL/Heat_diffusion/normal_controlled_coordinates.h>
 #include <CGAL/Heat_diffusion/operator_normalization.h>
 #include <CGAL/Heat_diffusion/parameters.h>
@@ -24,11 +25,9 @@
 #include <algorithm>
 #include <cmath>
 #include <functional>
-#include <limits>
 #include <memory>
 #include <mutex>
 #include <numeric>
-#include <sstream>
 #include <stdexcept>
 #include <utility>
 #include <vector>
@@ -182,10 +181,8 @@ public:
       if(method_ == Heat_kernel_method::spectral)
       {
         // One progress bar: the kernel (eigen solve) takes most of it, the regions the rest.
-        owned_kernel_ = std::make_shared<Heat_kernel>(
-            tm, parameters::combine(np, parameters::progress_callback(progress.part(0., 0.8).as_callback())));
-        kernel_ = owned_kernel_.get();
-        ncc_ = &kernel_->normal_controlled_coordinates();
+        use_kernel(std::make_shared<Heat_kernel>(
+            tm, parameters::combine(np, parameters::progress_callback(progress.part(0., 0.8).as_callback()))));
         build_spectral(t, progress.part(0.8, 1.));
         return;
       }
@@ -196,8 +193,7 @@ public:
                                     "eigenvalues; use Heat_kernel_method::spectral");
     const double sigma =
         internal::checked_sigma(choose_parameter(get_parameter(np, internal_np::sigma), 0.1), "Anisotropic_heat_diffusion");
-    owned_ncc_ = std::make_shared<NCC>(tm, np);
-    ncc_ = owned_ncc_.get();
+    ncc_ = std::make_shared<NCC>(tm, np);
     const internal::Indexed_mesh& mesh = ncc_->indexed_mesh();
     if(mesh.number_of_vertices() == 0)
       internal::throw_invalid_input("Anisotropic_heat_diffusion: the mesh is empty");
@@ -230,10 +226,12 @@ public:
   template <typename NamedParameters = parameters::Default_named_parameters>
   Anisotropic_heat_diffusion(const Heat_kernel& kernel, double t,
                              const NamedParameters& np = parameters::default_values())
-    : kernel_(&kernel), ncc_(&kernel.normal_controlled_coordinates()), method_(Heat_kernel_method::spectral),
+    : method_(Heat_kernel_method::spectral),
       diffusion_operator_(checked_normalization(parameters::choose_parameter(
           parameters::get_parameter(np, internal_np::operator_normalization), Operator_normalization::balanced)))
   {
+    // (borrowed: an owner-less shared pointer, which never deletes the kernel)
+    use_kernel(std::shared_ptr<const Heat_kernel>(std::shared_ptr<const Heat_kernel>(), &kernel));
     build_spectral(checked_time(t), internal::Progress(parameters::choose_parameter(
                                         parameters::get_parameter(np, internal_np::progress_callback),
                                         std::function<bool(double)>())));
@@ -337,13 +335,10 @@ public:
                const NamedParameters& np = parameters::default_values()) const
   {
     const TriangleMesh& tm = ncc_->mesh();
-    Eigen::VectorXd field(static_cast<Eigen::Index>(number_of_vertices()));
-    for(vertex_descriptor v : vertices(tm))
-      field[Eigen::Index(vertex_index(v))] = CGAL::to_double(get(field_in, v));
-    const Eigen::VectorXd result = diffuse(field, number_of_steps, np);
-    typedef typename boost::property_traits<OutputFieldMap>::value_type Value;
-    for(vertex_descriptor v : vertices(tm))
-      put(field_out, v, Value(result[Eigen::Index(vertex_index(v))]));
+    const auto index_of = [this](vertex_descriptor v) { return vertex_index(v); };
+    const Eigen::VectorXd field =
+        internal::read_vertex_field(tm, number_of_vertices(), field_in, index_of, "Anisotropic_heat_diffusion");
+    internal::write_vertex_field(tm, diffuse(field, number_of_steps, np), field_out, index_of);
   }
 
 private:
@@ -351,13 +346,7 @@ private:
   {
     if(field.size() != Eigen::Index(number_of_vertices()))
       internal::throw_invalid_input("Anisotropic_heat_diffusion: the field has the wrong size");
-    for(Eigen::Index i = 0; i < field.size(); ++i)
-      if(!std::isfinite(field[i]))
-      {
-        std::ostringstream os;
-        os << "Anisotropic_heat_diffusion: the field value at vertex " << i << " is not finite";
-        internal::throw_invalid_input(os.str());
-      }
+    internal::check_finite_values(field, "Anisotropic_heat_diffusion");
   }
 
   static Operator_normalization checked_normalization(Operator_normalization normalization)
@@ -367,11 +356,13 @@ private:
     return normalization;
   }
 
-  static double checked_time(double t)
+  static double checked_time(double t) { return internal::checked_positive(t, "Anisotropic_heat_diffusion", "time"); }
+
+  // The spectral kernel, and its NCC (which keeps the kernel alive).
+  void use_kernel(std::shared_ptr<const Heat_kernel> kernel)
   {
-    if(!(t > 0) || !std::isfinite(t))
-      internal::throw_invalid_input("Anisotropic_heat_diffusion: time must be positive and finite");
-    return t;
+    kernel_ = std::move(kernel);
+    ncc_ = std::shared_ptr<const NCC>(kernel_, &kernel_->normal_controlled_coordinates());
   }
 
   void build_spectral(double t, const internal::Progress& progress)
@@ -438,10 +429,10 @@ private:
   static constexpr double balancing_tolerance = 1e-4;
   static constexpr std::size_t maximum_balancing_iterations = 1000;
 
-  std::shared_ptr<const Heat_kernel> owned_kernel_;  // spectral, built from a mesh
-  const Heat_kernel* kernel_ = nullptr;              // spectral
-  std::shared_ptr<const NCC> owned_ncc_;             // local
-  const NCC* ncc_ = nullptr;
+  // The spectral kernel (owned when built from the mesh, borrowed when given), none
+  // with the local method; the NCC, the kernel's or the local method's own.
+  std::shared_ptr<const Heat_kernel> kernel_;
+  std::shared_ptr<const NCC> ncc_;
   Heat_kernel_method method_ = Heat_kernel_method::spectral;
   double time_ = 1.;
   internal::Diffusion_operator diffusion_operator_;  // A_t

@@ -11,6 +11,7 @@
 #include <CGAL/Heat_diffusion/internal/generalized_eigensolver.h>
 #include <CGAL/Heat_diffusion/internal/heat_operators.h>
 #include <CGAL/Heat_diffusion/internal/progress.h>
+#include <CGAL/Heat_diffusion/internal/vertex_normals_from_parameters.h>
 #include <CGAL/Heat_diffusion/normal_controlled_coordinates.h>
 #include <CGAL/Heat_diffusion/parameters.h>
 
@@ -336,10 +337,7 @@ private:
 
   // The factor beta_ij of eq. 14 (evaluated for every entry of every heat region of the
   // scale-invariant kernel: from the stored diagonal, not searched in B's columns).
-  double beta(std::size_t i, std::size_t j) const
-  {
-    return 0.5 * (mass_diagonal_[Eigen::Index(i)] + mass_diagonal_[Eigen::Index(j)]);
-  }
+  double beta(std::size_t i, std::size_t j) const { return internal::scale_invariant_factor(mass_diagonal_, i, j); }
 
   // Seconds since the last lap.
   double lap()

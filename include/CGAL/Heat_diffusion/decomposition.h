@@ -8,7 +8,9 @@
 #define CGAL_HEAT_DIFFUSION_DECOMPOSITION_H
 
 #include <CGAL/Heat_diffusion/Anisotropic_heat_diffusion.h>
+#include <CGAL/Heat_diffusion/internal/detail_bands.h>
 #include <CGAL/Heat_diffusion/internal/errors.h>
+#include <CGAL/Heat_diffusion/internal/vertex_fields.h>
 #include <CGAL/Heat_diffusion/parameters.h>
 #include <CGAL/Heat_diffusion/reconstruction.h>
 
@@ -23,69 +25,6 @@
 
 namespace CGAL {
 namespace Heat_diffusion {
-
-/// \cond SKIP_IN_MANUAL
-namespace internal {
-
-inline std::size_t checked_steps_per_level(double steps, const char* function)
-{
-  if(!(steps >= 1) || steps != std::floor(steps))
-  {
-    std::ostringstream os;
-    os << function << ": steps_per_level must be a positive integer, not " << steps;
-    throw_invalid_input(os.str());
-  }
-  return std::size_t(steps);
-}
-
-// Eq. 24 by vertex index: bands[j] = F^(j S) - F^((j+1) S) for j < levels, and
-// bands[levels] = F^(levels S), the residual. The bands telescope, so their sum is
-// the input up to rounding, and each band sums to zero because A_t conserves heat.
-template <typename Diffusion>
-std::vector<Eigen::VectorXd> decompose(const Diffusion& diffusion, const Eigen::VectorXd& field, std::size_t levels,
-                                       std::size_t steps_per_level)
-{
-  std::vector<Eigen::VectorXd> bands;
-  bands.reserve(levels + 1);
-  Eigen::VectorXd current = field;
-  for(std::size_t j = 0; j < levels; ++j)
-  {
-    Eigen::VectorXd next = diffusion.diffuse(current, steps_per_level);
-    bands.push_back(current - next);
-    current.swap(next);
-  }
-  bands.push_back(current);
-  return bands;
-}
-
-// Eq. 26: sum_j w_j D^j + S^L, the residual being the last band.
-inline Eigen::VectorXd synthesize(const std::vector<Eigen::VectorXd>& bands, const std::vector<double>& weights)
-{
-  Eigen::VectorXd result = bands.back();
-  for(std::size_t j = 0; j < weights.size(); ++j)
-    result += weights[j] * bands[j];
-  return result;
-}
-
-template <typename WeightRange>
-std::vector<double> checked_weights(const WeightRange& weights, const char* function)
-{
-  std::vector<double> result;
-  for(const auto& w : weights)
-  {
-    result.push_back(CGAL::to_double(w));
-    if(!std::isfinite(result.back()))
-    {
-      std::ostringstream os;
-      os << function << ": weight " << result.size() - 1 << " is " << result.back() << ", not a finite number";
-      throw_invalid_input(os.str());
-    }
-  }
-  return result;
-}
-
-} // namespace internal
-/// \endcond
 
 /// \ingroup PkgHeatDiffusionApplications
 /// Decomposes the scalar field \f$ S = F^0 \f$ into detail bands and a residual
@@ -137,33 +76,16 @@ void decompose_field(const Anisotropic_heat_diffusion<TriangleMesh, GeomTraits>&
       double(parameters::choose_parameter(parameters::get_parameter(np, internal_np::steps_per_level), 5)),
       "decompose_field");
   const TriangleMesh& tm = diffusion.normal_controlled_coordinates().mesh();
-  Eigen::VectorXd f0(Eigen::Index(diffusion.number_of_vertices()));
-  for(vertex_descriptor v : vertices(tm))
-  {
-    const double value = CGAL::to_double(get(field, v));
-    if(!std::isfinite(value))
-    {
-      std::ostringstream os;
-      os << "decompose_field: the field value at vertex " << diffusion.vertex_index(v) << " is " << value
-         << ", not a finite number";
-      internal::throw_invalid_input(os.str());
-    }
-    f0[Eigen::Index(diffusion.vertex_index(v))] = value;
-  }
+  const auto index_of = [&diffusion](vertex_descriptor v) { return diffusion.vertex_index(v); };
+  const Eigen::VectorXd f0 =
+      internal::read_vertex_field(tm, diffusion.number_of_vertices(), field, index_of, "decompose_field");
 
   const std::size_t levels = std::size_t(std::distance(std::begin(detail_maps), std::end(detail_maps)));
   const std::vector<Eigen::VectorXd> bands = internal::decompose(diffusion, f0, levels, steps_per_level);
   std::size_t j = 0;
   for(auto detail_map : detail_maps)
-  {
-    typedef typename boost::property_traits<decltype(detail_map)>::value_type Value;
-    for(vertex_descriptor v : vertices(tm))
-      put(detail_map, v, Value(bands[j][Eigen::Index(diffusion.vertex_index(v))]));
-    ++j;
-  }
-  typedef typename boost::property_traits<VertexResidualMap>::value_type Residual_value;
-  for(vertex_descriptor v : vertices(tm))
-    put(residual, v, Residual_value(bands.back()[Eigen::Index(diffusion.vertex_index(v))]));
+    internal::write_vertex_field(tm, bands[j++], detail_map, index_of);
+  internal::write_vertex_field(tm, bands.back(), residual, index_of);
 }
 
 /// \ingroup PkgHeatDiffusionApplications
@@ -309,13 +231,13 @@ void filter_shape(TriangleMesh& tm, const WeightRange& weights,
   {
     // The diffusion refers to the current shape: it must be gone before the shape moves.
     const Anisotropic_heat_diffusion<TriangleMesh, GeomTraits> diffusion(tm, np);
-      const auto& ncc = diffusion.normal_controlled_coordinates();
+    const auto& ncc = diffusion.normal_controlled_coordinates();
+    const auto index_of = [&diffusion](vertex_descriptor v) { return diffusion.vertex_index(v); };
     Eigen::VectorXd s(Eigen::Index(diffusion.number_of_vertices()));
     for(vertex_descriptor v : vertices(tm))
-      s[Eigen::Index(diffusion.vertex_index(v))] = ncc.normal_signature(v);
+      s[Eigen::Index(index_of(v))] = ncc.normal_signature(v);
     const Eigen::VectorXd edited = internal::synthesize(internal::decompose(diffusion, s, w.size(), steps_per_level), w);
-    for(vertex_descriptor v : vertices(tm))
-      put(signature, v, edited[Eigen::Index(diffusion.vertex_index(v))]);
+    internal::write_vertex_field(tm, edited, signature, index_of);
   }
   reconstruct_from_normal_signature(tm, signature, parameters::combine(np, parameters::anchor_weight(anchor_weight)));
 }

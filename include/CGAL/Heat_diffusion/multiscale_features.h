@@ -9,6 +9,7 @@
 #include <CGAL/Heat_diffusion/Anisotropic_heat_diffusion.h>
 #include <CGAL/Heat_diffusion/internal/errors.h>
 #include <CGAL/Heat_diffusion/internal/feature_detection.h>
+#include <CGAL/Heat_diffusion/internal/vertex_fields.h>
 #include <CGAL/Heat_diffusion/parameters.h>
 
 #include <CGAL/boost/graph/named_params_helper.h>
@@ -17,7 +18,6 @@
 
 #include <algorithm>
 #include <cmath>
-#include <sstream>
 #include <utility>
 #include <vector>
 
@@ -87,15 +87,11 @@ detect_multiscale_features(const Anisotropic_heat_diffusion<TriangleMesh, GeomTr
 
   const TriangleMesh& tm = diffusion.normal_controlled_coordinates().mesh();
   const std::size_t n = diffusion.number_of_vertices();
+  const auto index_of = [&diffusion](vertex_descriptor v) { return diffusion.vertex_index(v); };
   std::vector<vertex_descriptor> vertex_of_index(n);
-  Eigen::VectorXd f0(static_cast<Eigen::Index>(n));
   for(vertex_descriptor v : vertices(tm))
-  {
-    const std::size_t i = diffusion.vertex_index(v);
-    vertex_of_index[i] = v;
-    f0[Eigen::Index(i)] = CGAL::to_double(get(field, v));
-  }
-  internal::check_field_is_finite(f0, function);
+    vertex_of_index[index_of(v)] = v;
+  const Eigen::VectorXd f0 = internal::read_vertex_field(tm, n, field, index_of, function);
 
   const internal::Vertex_adjacency adjacency =
       internal::make_vertex_adjacency(diffusion.normal_controlled_coordinates().indexed_mesh());
@@ -201,17 +197,12 @@ detect_multiscale_features(const TriangleMesh& tm, const VertexFieldMap& field, 
   // Surface_mesh has removed vertices.
   const auto vim = internal::vertex_numbering(tm, np);
   const std::size_t n = internal::number_of_listed_vertices(tm);
+  const auto index_of = [&vim](vertex_descriptor v) { return std::size_t(get(vim, v)); };
   std::vector<vertex_descriptor> vertex_of_index(n);
-  Eigen::VectorXd f0(static_cast<Eigen::Index>(n));
   for(vertex_descriptor v : vertices(tm))
-  {
-    const std::size_t i = std::size_t(get(vim, v));
-    vertex_of_index[i] = v;
-    f0[Eigen::Index(i)] = CGAL::to_double(get(field, v));
-  }
-  internal::check_field_is_finite(f0, function);
-  const internal::Vertex_adjacency adjacency = internal::make_vertex_adjacency(
-      tm, n, [&vim](vertex_descriptor v) { return std::size_t(get(vim, v)); });
+    vertex_of_index[index_of(v)] = v;
+  const Eigen::VectorXd f0 = internal::read_vertex_field(tm, n, field, index_of, function);
+  const internal::Vertex_adjacency adjacency = internal::make_vertex_adjacency(tm, n, index_of);
   std::vector<std::size_t> convex, concave;
   internal::detect_features(adjacency, f0, c, convex, concave);
   for(std::size_t i : convex)

@@ -8,6 +8,7 @@
 
 #include <CGAL/Heat_diffusion/internal/Indexed_mesh.h>
 #include <CGAL/Heat_diffusion/internal/ncc_weights.h>
+#include <CGAL/Heat_diffusion/internal/vertex_normals_from_parameters.h>
 #include <CGAL/Heat_diffusion/parameters.h>
 #include <CGAL/Heat_diffusion/vertex_normals.h>
 

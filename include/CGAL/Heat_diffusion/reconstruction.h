@@ -8,12 +8,13 @@
 
 #include <CGAL/Heat_diffusion/internal/errors.h>
 #include <CGAL/Heat_diffusion/internal/sparse_cholesky.h>
+#include <CGAL/Heat_diffusion/internal/vertex_fields.h>
+#include <CGAL/Heat_diffusion/internal/vertex_normals_from_parameters.h>
 #include <CGAL/Heat_diffusion/normal_controlled_coordinates.h>
 
 #include <Eigen/Sparse>
 
 #include <cmath>
-#include <sstream>
 
 namespace CGAL {
 namespace Heat_diffusion {
@@ -96,9 +97,9 @@ void reconstruct_from_normal_signature(TriangleMesh& tm, const VertexNSMap& ns_m
                                                              NamedParameters,
                                                              Area_weighted_vertex_normals>::type Rule;
 
-  const double anchor_weight = choose_parameter(get_parameter(np, internal_np::anchor_weight), 1.);
-  if(!(anchor_weight > 0) || !std::isfinite(anchor_weight))
-    internal::throw_invalid_input("reconstruct_from_normal_signature: anchor_weight must be positive and finite");
+  const double anchor_weight = internal::checked_positive(
+      choose_parameter(get_parameter(np, internal_np::anchor_weight), 1.), "reconstruct_from_normal_signature",
+      "anchor_weight");
 
   auto vpm = choose_parameter(get_parameter(np, CGAL::internal_np::vertex_point),
                               get_property_map(CGAL::vertex_point, tm));
@@ -123,20 +124,15 @@ void reconstruct_from_normal_signature(TriangleMesh& tm, const VertexNSMap& ns_m
   const std::vector<Eigen::Vector3d> target_normals =
       user_normals ? internal::vertex_normals(mesh, tm, vpm, vim, gt, np) : ncc.data().normals;
 
+  const Eigen::VectorXd signature = internal::read_vertex_field(
+      tm, n, ns_map, [&ncc](auto v) { return ncc.vertex_index(v); }, "reconstruct_from_normal_signature",
+      "normal signature");
   const Eigen::Index size = static_cast<Eigen::Index>(n);
   Eigen::MatrixXd target(size, 3), anchors(size, 3);
   Eigen::VectorXd squared_anchor_weights(size);
-  for(auto v : vertices(tm))
+  for(std::size_t i = 0; i < n; ++i)
   {
-    const std::size_t i = ncc.vertex_index(v);
-    const double s = CGAL::to_double(get(ns_map, v));
-    if(!std::isfinite(s))
-    {
-      std::ostringstream os;
-      os << "reconstruct_from_normal_signature: the normal signature of vertex " << i << " is not finite";
-      internal::throw_invalid_input(os.str());
-    }
-    target.row(Eigen::Index(i)) = (s * target_normals[i] + ncc.data().tangential_part[i]).transpose();
+    target.row(Eigen::Index(i)) = (signature[Eigen::Index(i)] * target_normals[i] + ncc.data().tangential_part[i]).transpose();
     anchors.row(Eigen::Index(i)) = mesh.points[i].transpose();
     squared_anchor_weights[Eigen::Index(i)] = anchor_weight * anchor_weight / ncc.data().areas[i];
   }

@@ -133,7 +133,7 @@ def test_bad_fields_and_steps():
         (lambda: d.diffuse(np.arange(4)), "field must be float64"),
         (lambda: d.diffuse([0.0, 1.0, 2.0, 3.0]), "field must be a numpy array"),
         (lambda: d.diffuse(np.zeros(8)[::2]), "field is not C-contiguous"),
-        (lambda: d.diffuse(np.array([0, np.nan, 0, 0])), "field value at vertex 1 is not finite"),
+        (lambda: d.diffuse(np.array([0, np.nan, 0, 0])), "field value at vertex 1 is nan, not a finite number"),
         (lambda: d.diffuse(good, -1), "steps must not be negative"),
         (lambda: d.diffuse(good, [1, -2]), "steps must not be negative"),
         (lambda: d.diffuse(good, 1.5), "steps must be a whole number"),

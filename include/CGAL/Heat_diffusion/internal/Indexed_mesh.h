@@ -62,6 +62,11 @@ struct Indexed_mesh
 
   std::size_t number_of_vertices() const { return points.size(); }
   std::size_t degree(std::size_t i) const { return fan_begin[i + 1] - fan_begin[i]; }
+  // (p_b - p_a) x (p_c - p_a): twice the vector area of the triangle (a, b, c).
+  Eigen::Vector3d cross_product(std::size_t a, std::size_t b, std::size_t c) const
+  {
+    return (points[b] - points[a]).cross(points[c] - points[a]);
+  }
 
   Eigen::Vector3d to_user_frame(const Eigen::Vector3d& p) const
   {
@@ -242,6 +247,15 @@ Indexed_mesh make_indexed_mesh(const TriangleMesh& tm, VertexPointMap vpm, Verte
     for(Eigen::Vector3d& p : mesh.points)
       p.setZero();
 
+  auto throw_broken_structure = [](const char* element, std::size_t number) {
+    std::ostringstream os;
+    os << "the halfedges around " << element << " " << number << " do not form a cycle: the halfedge structure"
+       << " is broken (CGAL::is_valid_polygon_mesh() fails)";
+    throw_invalid_input(os.str());
+  };
+  // (num_halfedges() counts removed halfedges too: a bound, not the number)
+  const std::size_t halfedge_bound = static_cast<std::size_t>(num_halfedges(tm));
+
   // Triangles.
   mesh.triangles.reserve(2 * n);  // a hint (num_faces() counts removed faces too)
   std::size_t face_number = 0;
@@ -253,7 +267,10 @@ Indexed_mesh make_indexed_mesh(const TriangleMesh& tm, VertexPointMap vpm, Verte
     {
       if(k < 3)
         t[k] = static_cast<std::size_t>(get(vim, target(h, tm)));
-      ++k;
+      // On a broken halfedge structure, next() may never lead back to the face's
+      // halfedge: the circulation would not end.
+      if(++k > halfedge_bound)
+        throw_broken_structure("face", face_number);
     }
     if(k != 3)
     {
@@ -262,8 +279,7 @@ Indexed_mesh make_indexed_mesh(const TriangleMesh& tm, VertexPointMap vpm, Verte
          << " (CGAL::Polygon_mesh_processing::triangulate_faces() triangulates a polygon mesh)";
       throw_invalid_input(os.str());
     }
-    const Eigen::Vector3d cross =
-        (mesh.points[t[1]] - mesh.points[t[0]]).cross(mesh.points[t[2]] - mesh.points[t[0]]);
+    const Eigen::Vector3d cross = mesh.cross_product(t[0], t[1], t[2]);
     if(!(cross.squaredNorm() > 0))
     {
       std::ostringstream os;
@@ -301,6 +317,10 @@ Indexed_mesh make_indexed_mesh(const TriangleMesh& tm, VertexPointMap vpm, Verte
     std::size_t border_count = 0;
     for(halfedge_descriptor h : halfedges_around_target(h0, tm))
     {
+      // A valid structure leads back to h0 before it has seen each halfedge into the
+      // vertex once; a broken one may never lead back.
+      if(cycle.size() == incoming[i])
+        throw_broken_structure("vertex", i);
       border_count += is_border(h, tm) ? 1 : 0;
       cycle.push_back(h);
     }

@@ -70,17 +70,6 @@ inline double checked_feature_threshold(double c, const char* function)
   return c;
 }
 
-inline void check_field_is_finite(const Eigen::VectorXd& field, const char* function)
-{
-  for(Eigen::Index i = 0; i < field.size(); ++i)
-    if(!std::isfinite(field[i]))
-    {
-      std::ostringstream os;
-      os << function << ": the field value at vertex " << i << " is " << field[i] << ", not a finite number";
-      throw_invalid_input(os.str());
-    }
-}
-
 // The criterion of the paper (section 7), which states the convex case; the concave
 // one is its mirror:
 // i is convex if F(i) > F(j) for every j != i of its 2-ring and F(i) > c max F,

@@ -32,6 +32,13 @@ struct Heat_operators
   double area_scale = 1.;                 // rescaled area = area_scale * area of the normalised frame
 };
 
+// The factor beta_ij = (B_ii + B_jj) / 2 of the scale-invariant kernel (eq. 14), from
+// the diagonal of B.
+inline double scale_invariant_factor(const Eigen::VectorXd& mass_diagonal, std::size_t i, std::size_t j)
+{
+  return 0.5 * (mass_diagonal[Eigen::Index(i)] + mass_diagonal[Eigen::Index(j)]);
+}
+
 // Edge weight w_ij = exp(-|delta_i - delta_j|^2 / sigma^2) from the NCC (eq. 10);
 // sigma = +infinity gives the plain (unweighted, w = 1) graph Laplacian.
 inline double ncc_edge_weight(const Ncc_data& data, std::size_t i, std::size_t j, double sigma)
@@ -54,7 +61,7 @@ inline double canonical_triangle_area(const Indexed_mesh& mesh, std::size_t a, s
     std::swap(b, c);
   if(a > b)
     std::swap(a, b);
-  return 0.5 * (mesh.points[b] - mesh.points[a]).cross(mesh.points[c] - mesh.points[a]).norm();
+  return 0.5 * mesh.cross_product(a, b, c).norm();
 }
 
 // `target_area`: the total area after rescaling; by default the number of vertices.

@@ -7,6 +7,7 @@
 #ifndef CGAL_HEAT_DIFFUSION_INTERNAL_KERNEL_COLUMNS_H
 #define CGAL_HEAT_DIFFUSION_INTERNAL_KERNEL_COLUMNS_H
 
+#include <CGAL/Heat_diffusion/internal/heat_operators.h>
 #include <CGAL/Heat_diffusion/internal/local_heat_kernel.h>
 
 #include <Eigen/Core>
@@ -29,13 +30,11 @@ namespace internal {
 // prepare() may do the work of a whole group of sources (the local kernel's clusters):
 // the sources come group after group.
 
-// The scale-invariant kernel's factor beta_ij = (B_ii + B_jj) / 2 (eq. 14), or 1 when
-// `mass_diagonal` is null (the plain kernel).
+// `dot` times the scale-invariant kernel's factor beta_ij (eq. 14), or `dot` itself
+// when `mass_diagonal` is null (the plain kernel).
 inline double kernel_factor(const Eigen::VectorXd* mass_diagonal, std::size_t i, std::size_t j, double dot)
 {
-  return mass_diagonal != nullptr
-             ? 0.5 * ((*mass_diagonal)[Eigen::Index(i)] + (*mass_diagonal)[Eigen::Index(j)]) * dot
-             : dot;
+  return mass_diagonal != nullptr ? scale_invariant_factor(*mass_diagonal, i, j) * dot : dot;
 }
 
 // The spectral kernel: h_t(j, i) = (beta_ij) Psi_i . Psi_j with Psi = Phi exp(-rate t / 2),

@@ -10,6 +10,7 @@
 #define CGAL_HEAT_DIFFUSION_INTERNAL_LOCAL_HEAT_KERNEL_H
 
 #include <CGAL/Heat_diffusion/internal/Indexed_mesh.h>
+#include <CGAL/Heat_diffusion/internal/multipole_block_substitution.h>
 #include <CGAL/Heat_diffusion/internal/multipole_ldlt.h>
 #include <CGAL/Heat_diffusion/internal/rational_exponential.h>
 #include <CGAL/Heat_diffusion/internal/vector_clones.h>
@@ -263,7 +264,7 @@ public:
     const int row = v.inverse_permutation[v.local[i]];
     const std::size_t column = v.block_column[v.source_position], pass = column / lanes_per_pass;
     if(!v.row_is_solved[pass * v.patch.size() + std::size_t(row)])
-      Multipole_ldlt::solve_row(v, row, pass);
+      Multipole_block_substitution::solve_row(v, row, pass);
     return v.columns(Eigen::Index(v.local[i]), Eigen::Index(column));
   }
 
@@ -433,8 +434,8 @@ private:
     w.source_rows.resize(c);
     for(std::size_t s = 0; s < c; ++s)
       w.source_rows[s] = w.local[sources[s]];
-    Multipole_ldlt::place_sources(w.source_rows.data(), c, w);
-    Multipole_ldlt::forward_substitution(w);
+    Multipole_block_substitution::place_sources(w.source_rows.data(), c, w);
+    Multipole_block_substitution::forward_substitution(w);
     // The heat balance, 1 - 1^T B_P h_s = 1 - sum_k Re(u_k^T D_k^-1 y_ks) (see above),
     // over the rows where the forward solutions y_ks are not zero.
     w.deficits.assign(c, 1.);
