@@ -16,10 +16,12 @@
 #include <CGAL/Surface_mesh.h>
 
 #include <algorithm>
+#include <cmath>
 #include <cctype>
 #include <filesystem>
 #include <fstream>
 #include <string>
+#include <utility>
 
 namespace heat_diffusion_cli {
 
@@ -28,6 +30,40 @@ namespace fs = std::filesystem;
 // The mesh type of the tool.
 typedef CGAL::Exact_predicates_inexact_constructions_kernel Kernel;
 typedef CGAL::Surface_mesh<Kernel::Point_3> Mesh;
+
+// CGAL::Polygon_mesh_processing::triangulate_faces(), in a way that cannot overflow.
+// It measures face normals and orientations with products of three or four
+// coordinates: beyond about 1e77 they overflow, and the exact fallback of the
+// predicates converts the infinity to a rational, which raises SIGFPE. The faces are
+// triangulated on a copy scaled by a power of two into [-1, 1]: the scaling is exact,
+// so the predicates' signs and the triangles are those of the mesh itself. The copy,
+// which keeps the vertex indices, then takes the original points back.
+inline bool triangulate_polygon_faces(Mesh& mesh)
+{
+  double largest = 0;
+  for(auto v : vertices(mesh))
+  {
+    const Kernel::Point_3& p = mesh.point(v);
+    largest = (std::max)({largest, std::abs(p.x()), std::abs(p.y()), std::abs(p.z())});
+  }
+  if(!std::isfinite(largest))
+    return false;  // (not scaled either: the package rejects such a mesh anyway)
+  int exponent = 0;
+  std::frexp(largest, &exponent);
+  Mesh scaled = mesh;
+  for(auto v : vertices(scaled))
+  {
+    const Kernel::Point_3& p = mesh.point(v);
+    scaled.point(v) = Kernel::Point_3(std::ldexp(p.x(), -exponent), std::ldexp(p.y(), -exponent),
+                                      std::ldexp(p.z(), -exponent));
+  }
+  if(!CGAL::Polygon_mesh_processing::triangulate_faces(scaled))
+    return false;
+  for(auto v : vertices(scaled))
+    scaled.point(v) = mesh.point(v);
+  mesh = std::move(scaled);
+  return true;
+}
 
 // Reads any format CGAL::IO::read_polygon_mesh reads (OFF, OBJ, PLY, STL, VTP, GOCAD,
 // ...), repairing the polygon soup on the way, and triangulates polygon faces.
@@ -74,7 +110,7 @@ std::size_t read_triangle_mesh(const std::string& path, Mesh& mesh)
   std::size_t polygons = 0;
   for(auto f : faces(mesh))
     polygons += CGAL::is_triangle(halfedge(f, mesh), mesh) ? 0 : 1;
-  if(polygons > 0 && !CGAL::Polygon_mesh_processing::triangulate_faces(mesh))
+  if(polygons > 0 && !triangulate_polygon_faces(mesh))
     throw Input_error(path + ": cannot triangulate its polygon faces");
   return polygons;
 }

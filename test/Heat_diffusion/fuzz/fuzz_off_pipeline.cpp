@@ -251,7 +251,7 @@ extern "C" int LLVMFuzzerTestOneInput(const std::uint8_t* data, std::size_t size
       std::size_t polygon_faces = 0;
       for(auto f : faces(mesh))
         polygon_faces += CGAL::is_triangle(halfedge(f, mesh), mesh) ? 0 : 1;
-      if(polygon_faces > 0 && !PMP::triangulate_faces(mesh))
+      if(polygon_faces > 0 && !heat_diffusion_cli::triangulate_polygon_faces(mesh))
         return 0;
     }
     catch(const std::exception&)
