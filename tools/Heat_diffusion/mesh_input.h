@@ -31,13 +31,17 @@ namespace fs = std::filesystem;
 typedef CGAL::Exact_predicates_inexact_constructions_kernel Kernel;
 typedef CGAL::Surface_mesh<Kernel::Point_3> Mesh;
 
-// CGAL::Polygon_mesh_processing::triangulate_faces(), in a way that cannot overflow.
-// It measures face normals and orientations with products of three or four
-// coordinates: beyond about 1e77 they overflow, and the exact fallback of the
-// predicates converts the infinity to a rational, which raises SIGFPE. The faces are
-// triangulated on a copy scaled by a power of two into [-1, 1]: the scaling is exact,
-// so the predicates' signs and the triangles are those of the mesh itself. The copy,
-// which keeps the vertex indices, then takes the original points back.
+// CGAL::Polygon_mesh_processing::triangulate_faces(), made safe on hostile input:
+// - It measures face normals and orientations with products of three or four
+//   coordinates: beyond about 1e77 they overflow, and the exact fallback of the
+//   predicates converts the infinity to a rational, which raises SIGFPE. The faces are
+//   triangulated on a copy scaled by a power of two into [-1, 1]: the scaling is exact,
+//   so the predicates' signs and the triangles are those of the mesh itself. The copy,
+//   which keeps the vertex indices, then takes the original points back.
+// - Its default for faces of five or more vertices, a constrained Delaunay
+//   triangulation in the plane of the face, reads a null face handle (undefined
+//   behaviour) when a non-planar face's projection intersects itself (found by
+//   fuzzing). The hole filling it offers instead works in 3D, on any polygon.
 inline bool triangulate_polygon_faces(Mesh& mesh)
 {
   double largest = 0;
@@ -57,7 +61,8 @@ inline bool triangulate_polygon_faces(Mesh& mesh)
     scaled.point(v) = Kernel::Point_3(std::ldexp(p.x(), -exponent), std::ldexp(p.y(), -exponent),
                                       std::ldexp(p.z(), -exponent));
   }
-  if(!CGAL::Polygon_mesh_processing::triangulate_faces(scaled))
+  if(!CGAL::Polygon_mesh_processing::triangulate_faces(
+         scaled, CGAL::parameters::use_delaunay_triangulation(false)))
     return false;
   for(auto v : vertices(scaled))
     scaled.point(v) = mesh.point(v);
