@@ -95,7 +95,7 @@ enum class Denoising_method
 ///     from the input reaches `displacement_limit` times
 ///     \f$ \hat\varepsilon + \min(1, \nu)(\hat\varepsilon' - \hat\varepsilon) \f$. Meshes of reasonable
 ///     triangles (\f$ a \geq 0.5 \f$) are filtered as in 5.
-/// A `normal_sigma` given by the user replaces 3 to 5 by iterations with that width until
+/// A `normal_sigma` given by the user replaces 3 to 6 by iterations with that width until
 /// the displacement of 3. A mesh whose noise level is 0 is left unchanged.
 ///
 /// <b>`Denoising_method::signature_diffusion`: the paper's pipeline.</b> Each of the

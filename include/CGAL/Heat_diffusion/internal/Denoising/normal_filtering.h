@@ -380,11 +380,12 @@ struct Normal_filtering_options
 constexpr double crease_preserving_sigma = 0.45;
 
 // Needle meshes (curved surfaces only). A face's normal moves by about the noise over
-// its smallest altitude: on a mesh whose median face aspect (2 area / longest edge^2)
-// is a < needle_reference_aspect, the noise of the normals is amplified by about
-// (needle_reference_aspect / a)^2 - 1 = nu (the needle factor, 0 on well-shaped
-// meshes) relative to that of a mesh of reasonable triangles, and filtering the noisy
-// normals cannot recover the surface. There the positions are first smoothed with the
+// its smallest altitude, that is over a times its longest edge, a = 2 area / longest
+// edge^2 its aspect (0.87 for an equilateral triangle): where the median aspect a is
+// below needle_reference_aspect, the normals are mostly noise, and filtering them cannot
+// recover the surface. The needle factor nu = (needle_reference_aspect / a)^2 - 1 (0 on
+// well-shaped meshes) grows with the square of that amplification of the noise of the
+// normals. There the positions are first smoothed with the
 // cotangent operator, whose result does not depend on the triangles' shape, for the time
 // needle_smoothing_time nu eps^2 (eps the noise level along the smoothed normals, see
 // plane_fit_noise_level), the vertices are fitted to the normals of that smoothed
@@ -393,7 +394,10 @@ constexpr double crease_preserving_sigma = 0.45;
 // measured on the pilot surface (the input smoothed for the time of one squared mean edge
 // length), because noise along the normals alone makes well-shaped faces look thin.
 // The constants were chosen on CGAL's needle meshes (blade, rotor_small, anchor) and
-// checked not to change the organic ones (elephant, armadillo, bunny: nu = 0).
+// checked not to change the organic ones (elephant, bunny: nu = 0; armadillo: 0 to
+// 0.03). The stop's noise level moves from that of plane_fit_noise_level along the
+// input's normals (nu = 0, unchanged behaviour) to that along the smoothed normals
+// (nu >= 1), which is the better estimate on needles.
 constexpr double needle_reference_aspect = 0.5;
 constexpr double needle_smoothing_time = 2.;
 constexpr double needle_fit_anchor_weight = 0.01;
@@ -409,7 +413,7 @@ constexpr double piecewise_flat_roughness = 0.15;
 // input, or on a mesh of needles the input fitted to the normals of its smoothed copy,
 // written to `points`. Returns the noise level for the stop.
 inline double start_curved_filtering(const Indexed_mesh& mesh, const Face_adjacency& adjacency, double noise,
-                                 std::vector<Eigen::Vector3d>& points)
+                                     std::vector<Eigen::Vector3d>& points)
 {
   points = mesh.points;
   double mean_edge = 0;
@@ -418,7 +422,8 @@ inline double start_curved_filtering(const Indexed_mesh& mesh, const Face_adjace
       mean_edge += (mesh.points[t[e]] - mesh.points[t[(e + 1) % 3]]).norm();
   mean_edge /= double(3 * mesh.triangles.size());
   std::vector<Eigen::Vector3d> pilot;
-  if(!(mean_edge > 0) || !std::isfinite(mean_edge) || !implicit_smoothing(mesh, mesh.points, mean_edge * mean_edge, pilot))
+  if(!(mean_edge > 0) || !std::isfinite(mean_edge) ||
+     !implicit_smoothing(mesh, mesh.points, mean_edge * mean_edge, pilot))
     return noise;
   const double aspect = median_face_aspect(mesh, pilot);
   if(!(aspect > 0))
@@ -432,7 +437,8 @@ inline double start_curved_filtering(const Indexed_mesh& mesh, const Face_adjace
     return noise;
   std::vector<Eigen::Vector3d> smoothed, normals, centroids;
   std::vector<double> areas;
-  if(implicit_smoothing(mesh, mesh.points, needle_smoothing_time * needle_factor * guided_noise * guided_noise, smoothed))
+  const double time = needle_smoothing_time * needle_factor * guided_noise * guided_noise;
+  if(implicit_smoothing(mesh, mesh.points, time, smoothed))
   {
     face_geometry(mesh, smoothed, normals, areas, centroids);
     std::vector<Eigen::Vector3d> fitted;
