@@ -218,8 +218,8 @@ enum class Denoising_method
 /// with TBB), at most `number_of_iterations` iterations plus those of the isotropic
 /// filtering on curved surfaces; on curved surfaces one sparse Cholesky factorisation of
 /// n unknowns (the smoothed copy \f$ P \f$), and on curved meshes of needles one more of n
-/// and one of 3n unknowns (see `benchmark_denoising` for times measured against the
-/// published filters).
+/// and a conjugate gradient solve of 3n unknowns (see `benchmark_denoising` for times
+/// measured against the published filters).
 /// Signature diffusion: per iteration, one edge-weighted heat kernel (a sparse Cholesky
 /// factorisation and a Lanczos iteration of \f$ O(n m^2) \f$ dense work: most of the time),
 /// the operator \f$ A_t \f$ (linear in n), k sparse products and one sparse Cholesky
