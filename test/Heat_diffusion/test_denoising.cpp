@@ -33,6 +33,7 @@
 #include <iostream>
 #include <limits>
 #include <sstream>
+#include <string>
 #include <vector>
 
 namespace HD = CGAL::Heat_diffusion;
@@ -96,9 +97,11 @@ double best_bilateral(const Mesh& clean, const Mesh& noisy, std::string& best)
 
 // MAD bounds (the measured values, seed 5, plus about 15 %, so that a regression
 // fails), and comparisons with the same-run figures of GNF (the paper's defaults) and
-// of the best of the bilateral grid where denoise_mesh() is ahead of them. It is not on
-// the needle-triangle mesh (GNF and the bilateral filter are better there) nor against
-// the bilateral filter on elephant at 0.1: those cases check the bound only.
+// of the best of the bilateral grid where denoise_mesh() is ahead of them: everywhere
+// but against the bilateral filter on elephant at 0.1, which checks the bound only.
+// The needle-triangle CAD meshes: blade (median face aspect 0.08, every face a needle;
+// open) and rotor_small (a third of the faces with a smallest angle under 10 degrees;
+// closed, but the noise alone changes its volume by 3 %, so the volume is not checked).
 struct Quality_case
 {
   const char* file;
@@ -118,7 +121,8 @@ void test_quality()
 {
   const Quality_case cases[] = {{"fandisk.off", 0.3, 3.2, true, true, true},
                                 {"fandisk.off", 0.5, 5.2, true, true, true},
-                                {"rotor_small.off", 0.3, 46., false, false, false},
+                                {"blade.off", 0.3, 11.2, true, true, false},
+                                {"rotor_small.off", 0.3, 30., true, true, false},
                                 {"elephant.off", 0.1, 11., true, false, true}};
   for(const Quality_case& c : cases)
   {
@@ -233,55 +237,68 @@ void test_kernels_and_mesh_types()
 
 // NCC, the rescaled kernel and the area-normalised anchors are dimensionless: the
 // result of a scaled mesh is the scaled result.
+// rotor_small, a mesh of needles, takes the path of the smoothed start and the
+// least-squares fit (normal filtering only).
 void test_scale_invariance()
 {
-  Mesh mesh = test_support::load<Mesh>("elephant.off");
-  test_support::add_normal_noise(mesh, 0.2, 11);
-  const double edge = test_support::mean_edge_length(mesh);
-  for(HD::Denoising_method method : {HD::Denoising_method::normal_filtering, HD::Denoising_method::signature_diffusion})
-    for(double scale : {1e-3, 1e3})
-    {
-      Mesh reference = mesh, scaled = mesh;
-      for(auto v : scaled.vertices())
-        scaled.point(v) = CGAL::ORIGIN + scale * (scaled.point(v) - CGAL::ORIGIN);
-      // Normal filtering: its defaults, with the displacement limit.
-      const bool filtering = method == HD::Denoising_method::normal_filtering;
-      const auto np = HD::parameters::combine(CGAL::parameters::number_of_iterations(filtering ? 100 : 2),
-                                              HD::parameters::number_of_eigenpairs(60),
-                                              HD::parameters::denoising_method(method));
-      HD::denoise_mesh(reference, np);
-      HD::denoise_mesh(scaled, np);
-      double error = 0;
-      for(auto v : mesh.vertices())
-        error = (std::max)(error, std::sqrt(CGAL::squared_distance(
-                                      reference.point(v), CGAL::ORIGIN + (scaled.point(v) - CGAL::ORIGIN) / scale)));
-      CHECK_MESSAGE(error < 1e-7 * edge, "scale " << scale << ": " << error / edge << " mean edge lengths");
-    }
+  for(const char* file : {"elephant.off", "rotor_small.off"})
+  {
+    Mesh mesh = test_support::load<Mesh>(file);
+    test_support::add_normal_noise(mesh, 0.2, 11);
+    const double edge = test_support::mean_edge_length(mesh);
+    const bool needles = std::string(file) == "rotor_small.off";
+    for(HD::Denoising_method method : {HD::Denoising_method::normal_filtering, HD::Denoising_method::signature_diffusion})
+      for(double scale : {1e-3, 1e3})
+      {
+        if(needles && method == HD::Denoising_method::signature_diffusion)
+          continue;
+        Mesh reference = mesh, scaled = mesh;
+        for(auto v : scaled.vertices())
+          scaled.point(v) = CGAL::ORIGIN + scale * (scaled.point(v) - CGAL::ORIGIN);
+        // Normal filtering: its defaults, with the displacement limit.
+        const bool filtering = method == HD::Denoising_method::normal_filtering;
+        const auto np = HD::parameters::combine(CGAL::parameters::number_of_iterations(filtering ? 100 : 2),
+                                                HD::parameters::number_of_eigenpairs(60),
+                                                HD::parameters::denoising_method(method));
+        HD::denoise_mesh(reference, np);
+        HD::denoise_mesh(scaled, np);
+        double error = 0;
+        for(auto v : mesh.vertices())
+          error = (std::max)(error, std::sqrt(CGAL::squared_distance(
+                                        reference.point(v), CGAL::ORIGIN + (scaled.point(v) - CGAL::ORIGIN) / scale)));
+        CHECK_MESSAGE(error < 1e-7 * edge, file << ", scale " << scale << ": " << error / edge << " mean edge lengths");
+      }
+  }
 }
 
 // The noise estimate, the weights and the stop rules use no direction and no absolute
 // length: a rotated and translated mesh gives the rotated and translated result.
+// fandisk takes the crease-preserving path, rotor_small (needles) the smoothed start
+// and the least-squares fit.
 void test_rigid_motion_invariance()
 {
-  Mesh mesh = test_support::load<Mesh>("fandisk.off");
-  test_support::add_normal_noise(mesh, 0.3, 13);
-  const double edge = test_support::mean_edge_length(mesh);
-  const Eigen::Matrix3d rotation =
-      Eigen::AngleAxisd(0.7, Eigen::Vector3d(1, 2, 3).normalized()).toRotationMatrix();
-  const Eigen::Vector3d translation(3.5, -20, 7);
-  auto move = [&](const Epick::Point_3& p) {
-    const Eigen::Vector3d x = rotation * Eigen::Vector3d(p.x(), p.y(), p.z()) + translation;
-    return Epick::Point_3(x.x(), x.y(), x.z());
-  };
-  Mesh reference = mesh, moved = mesh;
-  for(auto v : moved.vertices())
-    moved.point(v) = move(moved.point(v));
-  HD::denoise_mesh(reference);
-  HD::denoise_mesh(moved);
-  double error = 0;
-  for(auto v : mesh.vertices())
-    error = (std::max)(error, std::sqrt(CGAL::squared_distance(move(reference.point(v)), moved.point(v))));
-  CHECK_MESSAGE(error < 1e-6 * edge, error / edge << " mean edge lengths");
+  for(const char* file : {"fandisk.off", "rotor_small.off"})
+  {
+    Mesh mesh = test_support::load<Mesh>(file);
+    test_support::add_normal_noise(mesh, 0.3, 13);
+    const double edge = test_support::mean_edge_length(mesh);
+    const Eigen::Matrix3d rotation =
+        Eigen::AngleAxisd(0.7, Eigen::Vector3d(1, 2, 3).normalized()).toRotationMatrix();
+    const Eigen::Vector3d translation(3.5, -20, 7);
+    auto move = [&](const Epick::Point_3& p) {
+      const Eigen::Vector3d x = rotation * Eigen::Vector3d(p.x(), p.y(), p.z()) + translation;
+      return Epick::Point_3(x.x(), x.y(), x.z());
+    };
+    Mesh reference = mesh, moved = mesh;
+    for(auto v : moved.vertices())
+      moved.point(v) = move(moved.point(v));
+    HD::denoise_mesh(reference);
+    HD::denoise_mesh(moved);
+    double error = 0;
+    for(auto v : mesh.vertices())
+      error = (std::max)(error, std::sqrt(CGAL::squared_distance(move(reference.point(v)), moved.point(v))));
+    CHECK_MESSAGE(error < 1e-6 * edge, file << ": " << error / edge << " mean edge lengths");
+  }
 }
 
 void test_parameters()

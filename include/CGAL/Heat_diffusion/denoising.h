@@ -76,8 +76,26 @@ enum class Denoising_method
 ///     creases are the fixed point of the filter;
 ///  5. otherwise the surface is curved: the range weights would freeze the noise into
 ///     false creases, so the input is filtered again with isotropic weights
-///     (\f$ \sigma_n = \infty \f$) until the displacement of 3.
-/// A `normal_sigma` given by the user replaces 3 to 5 by iterations with that width until
+///     (\f$ \sigma_n = \infty \f$) until the displacement of 3;
+///  6. on a curved mesh of needle triangles this isotropic filtering starts from a
+///     smoothed fit instead of the input. A face's normal moves by about the noise over
+///     its smallest altitude, so that on needles the normals are mostly noise, which
+///     filtering normals cannot average out, and the noise level of 1, measured along
+///     normals that tilt with the noise of thin fans, is about half the true one. Let
+///     \f$ P \f$ be the input smoothed by one implicit step of the cotangent mean curvature
+///     flow (\f$ (M + tL)x = Mp \f$) of time \f$ t = \bar e^2 \f$ (\f$ \bar e \f$ the mean edge length),
+///     \f$ a \f$ the median over the faces of \f$ P \f$ of 2 area / (longest edge)\f$^2 \f$ (0.87 for
+///     an equilateral triangle) and \f$ \nu = \max(0, (0.5/a)^2 - 1) \f$. If \f$ \nu > 0 \f$, the
+///     vertices are fitted in one sparse least-squares solve,
+///     \f$ \min_x \sum_f a_f \sum_{ij \in f} (n_f \cdot (x_j - x_i))^2 + 0.01 \sum_i m_i |x_i - v_i|^2 \f$,
+///     to the face normals \f$ n_f \f$ of the input smoothed by the same flow for the time
+///     \f$ 2 \nu \hat\varepsilon'^2 \f$ (the cotangent operator does not depend on the shape of
+///     the triangles), where \f$ \hat\varepsilon' \f$ is the noise level of 1 measured along the
+///     normals of \f$ P \f$; the isotropic filtering then runs from the fit until the displacement
+///     from the input reaches `displacement_limit` times
+///     \f$ \hat\varepsilon + \min(1, \nu)(\hat\varepsilon' - \hat\varepsilon) \f$. Meshes of reasonable
+///     triangles (\f$ a \geq 0.5 \f$) are filtered as in 5.
+/// A `normal_sigma` given by the user replaces 3 to 6 by iterations with that width until
 /// the displacement of 3. A mesh whose noise level is 0 is left unchanged.
 ///
 /// <b>`Denoising_method::signature_diffusion`: the paper's pipeline.</b> Each of the
@@ -198,8 +216,10 @@ enum class Denoising_method
 ///
 /// Complexity: normal filtering: linear in the size of `tm` per iteration (parallel
 /// with TBB), at most `number_of_iterations` iterations plus those of the isotropic
-/// filtering on curved surfaces (see `benchmark_denoising` for times measured against
-/// the published filters).
+/// filtering on curved surfaces; on curved surfaces one sparse Cholesky factorisation of
+/// n unknowns (the smoothed copy \f$ P \f$), and on curved meshes of needles one more of n
+/// and a conjugate gradient solve of 3n unknowns (see `benchmark_denoising` for times
+/// measured against the published filters).
 /// Signature diffusion: per iteration, one edge-weighted heat kernel (a sparse Cholesky
 /// factorisation and a Lanczos iteration of \f$ O(n m^2) \f$ dense work: most of the time),
 /// the operator \f$ A_t \f$ (linear in n), k sparse products and one sparse Cholesky

@@ -13,9 +13,12 @@
 #include <CGAL/Heat_diffusion/internal/Indexed_mesh.h>
 #include <CGAL/Heat_diffusion/internal/parallel_for.h>
 #include <CGAL/Heat_diffusion/internal/progress.h>
+#include <CGAL/Heat_diffusion/internal/sparse_cholesky.h>
 
 #include <Eigen/Core>
 #include <Eigen/Geometry>
+#include <Eigen/IterativeLinearSolvers>
+#include <Eigen/Sparse>
 
 #include <algorithm>
 #include <cmath>
@@ -95,9 +98,17 @@ inline Face_adjacency make_face_adjacency(const Indexed_mesh& mesh)
 // gives about e; a piecewise flat surface without noise gives 0, a smooth one a small
 // multiple of its curvature times the squared edge length. Each vertex is measured
 // against its own neighbours only, so uneven edge lengths do not bias it.
+// If `directions` is given, the normal of v_i is the area-weighted normal of those
+// positions (a smoothed copy of `points`) instead of that of `points`. On needle
+// triangles the normal of the noisy fan follows the noise of the neighbours (a thin fan
+// tilts with them), so that the distance along it misses much of the noise: the
+// estimate along the noisy normals is about half the true level on a mesh of needles,
+// and close to it along the normals of a smoothed copy.
 inline double plane_fit_noise_level(const Indexed_mesh& mesh, const Face_adjacency& adjacency,
-                                    const std::vector<Eigen::Vector3d>& points)
+                                    const std::vector<Eigen::Vector3d>& points,
+                                    const std::vector<Eigen::Vector3d>* directions = nullptr)
 {
+  const std::vector<Eigen::Vector3d>& frame = directions != nullptr ? *directions : points;
   const std::size_t n = mesh.number_of_vertices();
   std::vector<double> distances;
   distances.reserve(n);
@@ -111,7 +122,7 @@ inline double plane_fit_noise_level(const Indexed_mesh& mesh, const Face_adjacen
       for(std::size_t k = adjacency.vertex_faces_begin[i]; k < adjacency.vertex_faces_begin[i + 1]; ++k)
       {
         const auto& t = mesh.triangles[adjacency.vertex_faces[k]];
-        normal += (points[t[1]] - points[t[0]]).cross(points[t[2]] - points[t[0]]);
+        normal += (frame[t[1]] - frame[t[0]]).cross(frame[t[2]] - frame[t[0]]);
       }
       for(std::size_t k = mesh.fan_begin[i]; k < mesh.fan_begin[i + 1]; ++k)
         mean += points[mesh.fan[k]];
@@ -188,6 +199,193 @@ inline void fit_vertices_to_normals(const Indexed_mesh& mesh, const Face_adjacen
   }
 }
 
+// The cotangent stiffness matrix of `points` (the Dirichlet energy of the piecewise
+// linear interpolant: positive semi-definite whatever the angles, needles included) and
+// the barycentric vertex masses. Corners of a degenerate triangle add nothing.
+inline void cotangent_stiffness(const Indexed_mesh& mesh, const std::vector<Eigen::Vector3d>& points,
+                                Eigen::SparseMatrix<double>& stiffness, std::vector<double>& masses)
+{
+  const std::size_t n = points.size();
+  std::vector<Eigen::Triplet<double> > triplets;
+  triplets.reserve(12 * mesh.triangles.size());
+  masses.assign(n, 0.);
+  for(const auto& t : mesh.triangles)
+  {
+    const double area = 0.5 * (points[t[1]] - points[t[0]]).cross(points[t[2]] - points[t[0]]).norm();
+    for(int c = 0; c < 3; ++c)
+    {
+      if(std::isfinite(area))
+        masses[t[c]] += area / 3.;
+      const std::size_t k = t[c], i = t[(c + 1) % 3], j = t[(c + 2) % 3];
+      const Eigen::Vector3d a = points[i] - points[k], b = points[j] - points[k];
+      const double sine = a.cross(b).norm();
+      if(!(sine > 1e-12 * a.norm() * b.norm()))
+        continue;
+      const double w = 0.5 * a.dot(b) / sine;  // half the cotangent of the angle at k
+      if(!std::isfinite(w))
+        continue;
+      triplets.emplace_back(Eigen::Index(i), Eigen::Index(i), w);
+      triplets.emplace_back(Eigen::Index(j), Eigen::Index(j), w);
+      triplets.emplace_back(Eigen::Index(i), Eigen::Index(j), -w);
+      triplets.emplace_back(Eigen::Index(j), Eigen::Index(i), -w);
+    }
+  }
+  stiffness.resize(Eigen::Index(n), Eigen::Index(n));
+  stiffness.setFromTriplets(triplets.begin(), triplets.end());
+  // A vertex without area (isolated, or on degenerate faces only) keeps a small mass,
+  // so that the systems below stay definite and leave it where it is.
+  double total = 0;
+  for(double m : masses)
+    total += m;
+  const double floor = n > 0 && total > 0 ? 1e-6 * total / double(n) : 1.;
+  for(double& m : masses)
+    m = (std::max)(m, floor);
+}
+
+inline void silence(Sparse_cholesky& cholesky)
+{
+#ifdef CGAL_HEAT_DIFFUSION_USE_CHOLMOD
+  cholesky.cholmod().print = 0;  // failures are reported through info()
+#else
+  static_cast<void>(cholesky);
+#endif
+}
+
+// One implicit step of the mean curvature flow with the cotangent operator,
+// (M + t L) x = M p: a smoothing of the positions that does not depend on the shape of
+// the triangles (the operator converges to the Laplace-Beltrami operator on needles as
+// on well-shaped triangles). Returns false, leaving `result` untouched, if the
+// factorisation fails.
+inline bool implicit_smoothing(const Indexed_mesh& mesh, const std::vector<Eigen::Vector3d>& points, double time,
+                               std::vector<Eigen::Vector3d>& result)
+{
+  const std::size_t n = points.size();
+  Eigen::SparseMatrix<double> stiffness;
+  std::vector<double> masses;
+  cotangent_stiffness(mesh, points, stiffness, masses);
+  Eigen::SparseMatrix<double> system = time * stiffness;
+  Eigen::MatrixXd rhs(Eigen::Index(n), 3);
+  for(std::size_t i = 0; i < n; ++i)
+  {
+    system.coeffRef(Eigen::Index(i), Eigen::Index(i)) += masses[i];
+    rhs.row(Eigen::Index(i)) = masses[i] * points[i].transpose();
+  }
+  Sparse_cholesky cholesky;
+  silence(cholesky);
+  cholesky.compute(system);
+  if(cholesky.info() != Eigen::Success)
+    return false;
+  const Eigen::MatrixXd x = cholesky.solve(rhs);
+  if(cholesky.info() != Eigen::Success || !x.allFinite())
+    return false;
+  result.resize(n);
+  for(std::size_t i = 0; i < n; ++i)
+    result[i] = x.row(Eigen::Index(i)).transpose();
+  return true;
+}
+
+// The median over the faces of 2 area / (longest edge)^2: the smallest altitude over
+// the longest edge, 0.87 for an equilateral triangle, under 0.17 for a face whose
+// smallest angle is under 10 degrees (a needle).
+inline double median_face_aspect(const Indexed_mesh& mesh, const std::vector<Eigen::Vector3d>& points)
+{
+  std::vector<double> aspects;
+  aspects.reserve(mesh.triangles.size());
+  for(const auto& t : mesh.triangles)
+  {
+    const Eigen::Vector3d a = points[t[1]] - points[t[0]], b = points[t[2]] - points[t[1]],
+                          c = points[t[0]] - points[t[2]];
+    const double longest = (std::max)({a.squaredNorm(), b.squaredNorm(), c.squaredNorm()});
+    const double aspect = longest > 0 ? a.cross(c).norm() / longest : 0.;
+    if(std::isfinite(aspect))
+      aspects.push_back(aspect);
+  }
+  if(aspects.empty())
+    return 0.;
+  std::nth_element(aspects.begin(), aspects.begin() + std::ptrdiff_t(aspects.size() / 2), aspects.end());
+  return aspects[aspects.size() / 2];
+}
+
+// The vertex positions that best fit the face normals `normals` in one solve:
+// x = argmin sum_f a_f sum_{edges ij of f} (n_f . (x_j - x_i))^2 + lambda sum_i m_i |x_i - y_i|^2,
+// a_f the areas and m_i the barycentric masses of `anchors` (y), a sparse symmetric
+// positive definite system of 3n unknowns. The explicit update of Sun et al. moves a
+// vertex by a fraction of its faces' misfit per step, and needs hundreds of steps where
+// the faces are needles; the solve fits all the faces at once. The anchors hold the
+// tangential positions, which the normals leave free, and the scale. Both terms are
+// lengths to the fourth power: lambda has no unit. Returns false, leaving `points`
+// untouched, if neither the iterative solve nor the factorisation succeeds.
+inline bool fit_vertices_to_normals_least_squares(const Indexed_mesh& mesh, const std::vector<Eigen::Vector3d>& normals,
+                                                  const std::vector<Eigen::Vector3d>& anchors, double lambda,
+                                                  std::vector<Eigen::Vector3d>& points)
+{
+  const std::size_t n = anchors.size();
+  Eigen::SparseMatrix<double> unused;
+  std::vector<double> masses;
+  cotangent_stiffness(mesh, anchors, unused, masses);
+  std::vector<Eigen::Triplet<double> > triplets;
+  triplets.reserve(mesh.triangles.size() * 3 * 36 + 3 * n);
+  for(std::size_t f = 0; f < mesh.triangles.size(); ++f)
+  {
+    const auto& t = mesh.triangles[f];
+    const double area = 0.5 * (anchors[t[1]] - anchors[t[0]]).cross(anchors[t[2]] - anchors[t[0]]).norm();
+    if(!(area > 0) || !std::isfinite(area))
+      continue;
+    const Eigen::Matrix3d block = area * normals[f] * normals[f].transpose();
+    for(int e = 0; e < 3; ++e)
+    {
+      const Eigen::Index i = Eigen::Index(3 * t[e]), j = Eigen::Index(3 * t[(e + 1) % 3]);
+      for(int r = 0; r < 3; ++r)
+        for(int c = 0; c < 3; ++c)
+        {
+          triplets.emplace_back(i + r, i + c, block(r, c));
+          triplets.emplace_back(j + r, j + c, block(r, c));
+          triplets.emplace_back(i + r, j + c, -block(r, c));
+          triplets.emplace_back(j + r, i + c, -block(r, c));
+        }
+    }
+  }
+  Eigen::VectorXd rhs(Eigen::Index(3 * n));
+  for(std::size_t i = 0; i < n; ++i)
+    for(int r = 0; r < 3; ++r)
+    {
+      triplets.emplace_back(Eigen::Index(3 * i + r), Eigen::Index(3 * i + r), lambda * masses[i]);
+      rhs[Eigen::Index(3 * i + r)] = lambda * masses[i] * anchors[i][r];
+    }
+  Eigen::SparseMatrix<double> system{Eigen::Index(3 * n), Eigen::Index(3 * n)};
+  system.setFromTriplets(triplets.begin(), triplets.end());
+  // Conjugate gradients from the anchors, to a relative residual of 1e-10: a few hundred
+  // sparse products on CGAL's needle meshes, cheaper than the sparse Cholesky
+  // factorisation of this 3n system (its fill-in is large), with the same MAD to four
+  // digits there; the factorisation if they do not converge.
+  Eigen::VectorXd x(Eigen::Index(3 * n));
+  for(std::size_t i = 0; i < n; ++i)
+    x.segment<3>(Eigen::Index(3 * i)) = anchors[i];
+  Eigen::ConjugateGradient<Eigen::SparseMatrix<double>, Eigen::Lower | Eigen::Upper,
+                           Eigen::DiagonalPreconditioner<double> >
+      iterative;
+  iterative.setTolerance(1e-10);
+  iterative.setMaxIterations(Eigen::Index(2000));
+  iterative.compute(system);
+  if(iterative.info() == Eigen::Success)
+    x = iterative.solveWithGuess(rhs, Eigen::VectorXd(x));
+  if(iterative.info() != Eigen::Success || !x.allFinite())
+  {
+    Sparse_cholesky cholesky;
+    silence(cholesky);
+    cholesky.compute(system);
+    if(cholesky.info() != Eigen::Success)
+      return false;
+    x = cholesky.solve(rhs);
+    if(cholesky.info() != Eigen::Success || !x.allFinite())
+      return false;
+  }
+  points.resize(n);
+  for(std::size_t i = 0; i < n; ++i)
+    points[i] = x.segment<3>(Eigen::Index(3 * i));
+  return true;
+}
+
 struct Normal_filtering_options
 {
   std::size_t iterations = 40;
@@ -200,12 +398,74 @@ struct Normal_filtering_options
 // degrees or more (|n_f - n_g| >= 0.68) weigh each other less than a third.
 constexpr double crease_preserving_sigma = 0.45;
 
+// Needle meshes (curved surfaces only). A face's normal moves by about the noise over
+// its smallest altitude, that is over a times its longest edge, a = 2 area / longest
+// edge^2 its aspect (0.87 for an equilateral triangle): where the median aspect a is
+// below needle_reference_aspect, the normals are mostly noise, and filtering them cannot
+// recover the surface. The needle factor nu = (needle_reference_aspect / a)^2 - 1 (0 on
+// well-shaped meshes) grows with the square of that amplification of the noise of the
+// normals. There the positions are first smoothed with the
+// cotangent operator, whose result does not depend on the triangles' shape, for the time
+// needle_smoothing_time nu eps^2 (eps the noise level along the smoothed normals, see
+// plane_fit_noise_level), the vertices are fitted to the normals of that smoothed
+// surface in one least-squares solve anchored to the input (weight
+// needle_fit_anchor_weight), and the normal filter goes on from there. The aspect is
+// measured on the pilot surface (the input smoothed for the time of one squared mean edge
+// length), because noise along the normals alone makes well-shaped faces look thin.
+// The constants were chosen on CGAL's needle meshes (blade, rotor_small, anchor) and
+// checked not to change the organic ones (elephant, bunny: nu = 0; armadillo: 0 to
+// 0.03). The stop's noise level moves from that of plane_fit_noise_level along the
+// input's normals (nu = 0, unchanged behaviour) to that along the smoothed normals
+// (nu >= 1), which is the better estimate on needles.
+constexpr double needle_reference_aspect = 0.5;
+constexpr double needle_smoothing_time = 2.;
+constexpr double needle_fit_anchor_weight = 0.01;
+
 // A surface that the crease-preserving filter makes flat to within this fraction of the
 // noise level is taken for piecewise flat (CAD parts: 0.02 to 0.11 of it on CGAL's
 // fandisk and anchor_dense with 0.3 to 0.5 mean edge length of noise); curved surfaces
 // keep a roughness of at least 0.2 of it (elephant, armadillo, the needle-triangle
 // blade), which the filter would only turn into false creases.
 constexpr double piecewise_flat_roughness = 0.15;
+
+// The start of the isotropic filtering of a curved surface (see filter_normals): the
+// input, or on a mesh of needles the input fitted to the normals of its smoothed copy,
+// written to `points`. Returns the noise level for the stop.
+inline double start_curved_filtering(const Indexed_mesh& mesh, const Face_adjacency& adjacency, double noise,
+                                     std::vector<Eigen::Vector3d>& points)
+{
+  points = mesh.points;
+  double mean_edge = 0;
+  for(const auto& t : mesh.triangles)
+    for(int e = 0; e < 3; ++e)
+      mean_edge += (mesh.points[t[e]] - mesh.points[t[(e + 1) % 3]]).norm();
+  mean_edge /= double(3 * mesh.triangles.size());
+  std::vector<Eigen::Vector3d> pilot;
+  if(!(mean_edge > 0) || !std::isfinite(mean_edge) ||
+     !implicit_smoothing(mesh, mesh.points, mean_edge * mean_edge, pilot))
+    return noise;
+  const double aspect = median_face_aspect(mesh, pilot);
+  if(!(aspect > 0))
+    return noise;
+  const double ratio = needle_reference_aspect / aspect;
+  const double needle_factor = (std::max)(0., ratio * ratio - 1.);
+  if(needle_factor == 0)
+    return noise;
+  const double guided_noise = plane_fit_noise_level(mesh, adjacency, mesh.points, &pilot);
+  if(!(guided_noise > 0) || !std::isfinite(guided_noise))
+    return noise;
+  std::vector<Eigen::Vector3d> smoothed, normals, centroids;
+  std::vector<double> areas;
+  const double time = needle_smoothing_time * needle_factor * guided_noise * guided_noise;
+  if(implicit_smoothing(mesh, mesh.points, time, smoothed))
+  {
+    face_geometry(mesh, smoothed, normals, areas, centroids);
+    std::vector<Eigen::Vector3d> fitted;
+    if(fit_vertices_to_normals_least_squares(mesh, normals, mesh.points, needle_fit_anchor_weight, fitted))
+      points.swap(fitted);
+  }
+  return noise + (std::min)(1., needle_factor) * (guided_noise - noise);
+}
 
 // Runs the filter on `points` (the normalised frame of `mesh`), starting from the input
 // positions. Without a user normal_sigma:
@@ -217,7 +477,10 @@ constexpr double piecewise_flat_roughness = 0.15;
 //     sharpen them;
 //  3. otherwise the surface is curved, and the normals are diffused isotropically from
 //     the input until the same displacement: the range weights would freeze the noise
-//     into false creases, and the stop keeps the shape's detail.
+//     into false creases, and the stop keeps the shape's detail. On a mesh of needles
+//     (needle factor nu > 0, see needle_reference_aspect) the filter starts from the
+//     fit to a smoothed copy instead of the input, and the noise level of the stop is
+//     that measured along the smoothed normals (blended with the other for 0 < nu < 1).
 // With a user normal_sigma, that width is used until the displacement limit.
 // A mesh without measurable noise is left unchanged.
 inline std::vector<Eigen::Vector3d> filter_normals(const Indexed_mesh& mesh, const Normal_filtering_options& options,
@@ -253,8 +516,7 @@ inline std::vector<Eigen::Vector3d> filter_normals(const Indexed_mesh& mesh, con
       squares += (points[i] - before[i]).squaredNorm();
     return std::sqrt(squares / double(n));
   };
-  const double limit = options.displacement_limit * noise;
-  auto run_to_limit = [&](double sigma_n) {
+  auto run_to_limit = [&](double sigma_n, double limit) {
     for(std::size_t it = 0; it < options.iterations; ++it)
     {
       iterate(sigma_n);
@@ -265,10 +527,10 @@ inline std::vector<Eigen::Vector3d> filter_normals(const Indexed_mesh& mesh, con
 
   if(options.normal_sigma > 0)
   {
-    run_to_limit(options.normal_sigma);
+    run_to_limit(options.normal_sigma, options.displacement_limit * noise);
     return points;
   }
-  run_to_limit(crease_preserving_sigma);
+  run_to_limit(crease_preserving_sigma, options.displacement_limit * noise);
   const std::size_t first_phase = done;
   if(plane_fit_noise_level(mesh, adjacency, points) < piecewise_flat_roughness * noise)
   {
@@ -277,8 +539,8 @@ inline std::vector<Eigen::Vector3d> filter_normals(const Indexed_mesh& mesh, con
         break;
     return points;
   }
-  points = mesh.points;
-  run_to_limit(std::numeric_limits<double>::infinity());
+  const double curved_noise = start_curved_filtering(mesh, adjacency, noise, points);
+  run_to_limit(std::numeric_limits<double>::infinity(), options.displacement_limit * curved_noise);
   return points;
 }
 
