@@ -1,0 +1,220 @@
+// Copyright (c) 2026 The CGAL Heat_diffusion developers.
+// SPDX-License-Identifier: LGPL-3.0-or-later
+//
+// The surface the denoising starts from on meshes of needle triangles: an implicit
+// mean curvature flow with the cotangent operator (which does not depend on the shape
+// of the triangles), the measure of how needle-like the faces are, and the vertex
+// positions that best fit given face normals in one least-squares solve.
+
+#ifndef CGAL_HEAT_DIFFUSION_INTERNAL_DENOISING_NEEDLE_SURFACE_FIT_H
+#define CGAL_HEAT_DIFFUSION_INTERNAL_DENOISING_NEEDLE_SURFACE_FIT_H
+
+#include <CGAL/Heat_diffusion/internal/Indexed_mesh.h>
+#include <CGAL/Heat_diffusion/internal/sparse_cholesky.h>
+
+#include <Eigen/Core>
+#include <Eigen/Geometry>
+#include <Eigen/IterativeLinearSolvers>
+#include <Eigen/Sparse>
+
+#include <algorithm>
+#include <cmath>
+#include <cstddef>
+#include <vector>
+
+namespace CGAL {
+namespace Heat_diffusion {
+namespace internal {
+
+// The cotangent stiffness matrix of `points` (the Dirichlet energy of the piecewise
+// linear interpolant: positive semi-definite whatever the angles, needles included) and
+// the barycentric vertex masses. Corners of a degenerate triangle add nothing.
+inline void cotangent_stiffness(const Indexed_mesh& mesh, const std::vector<Eigen::Vector3d>& points,
+                                Eigen::SparseMatrix<double>& stiffness, std::vector<double>& masses)
+{
+  const std::size_t n = points.size();
+  std::vector<Eigen::Triplet<double> > triplets;
+  triplets.reserve(12 * mesh.triangles.size());
+  masses.assign(n, 0.);
+  for(const auto& t : mesh.triangles)
+  {
+    const double area = 0.5 * (points[t[1]] - points[t[0]]).cross(points[t[2]] - points[t[0]]).norm();
+    for(int c = 0; c < 3; ++c)
+    {
+      if(std::isfinite(area))
+        masses[t[c]] += area / 3.;
+      const std::size_t k = t[c], i = t[(c + 1) % 3], j = t[(c + 2) % 3];
+      const Eigen::Vector3d a = points[i] - points[k], b = points[j] - points[k];
+      const double sine = a.cross(b).norm();
+      if(!(sine > 1e-12 * a.norm() * b.norm()))
+        continue;
+      const double w = 0.5 * a.dot(b) / sine;  // half the cotangent of the angle at k
+      if(!std::isfinite(w))
+        continue;
+      triplets.emplace_back(Eigen::Index(i), Eigen::Index(i), w);
+      triplets.emplace_back(Eigen::Index(j), Eigen::Index(j), w);
+      triplets.emplace_back(Eigen::Index(i), Eigen::Index(j), -w);
+      triplets.emplace_back(Eigen::Index(j), Eigen::Index(i), -w);
+    }
+  }
+  stiffness.resize(Eigen::Index(n), Eigen::Index(n));
+  stiffness.setFromTriplets(triplets.begin(), triplets.end());
+  // A vertex without area (isolated, or on degenerate faces only) keeps a small mass,
+  // so that the systems below stay definite and leave it where it is.
+  double total = 0;
+  for(double m : masses)
+    total += m;
+  const double floor = n > 0 && total > 0 ? 1e-6 * total / double(n) : 1.;
+  for(double& m : masses)
+    m = (std::max)(m, floor);
+}
+
+inline void silence(Sparse_cholesky& cholesky)
+{
+#ifdef CGAL_HEAT_DIFFUSION_USE_CHOLMOD
+  cholesky.cholmod().print = 0;  // failures are reported through info()
+#else
+  static_cast<void>(cholesky);
+#endif
+}
+
+// One implicit step of the mean curvature flow with the cotangent operator,
+// (M + t L) x = M p: a smoothing of the positions that does not depend on the shape of
+// the triangles (the operator converges to the Laplace-Beltrami operator on needles as
+// on well-shaped triangles). Returns false, leaving `result` untouched, if the
+// factorisation fails.
+inline bool implicit_smoothing(const Indexed_mesh& mesh, const std::vector<Eigen::Vector3d>& points, double time,
+                               std::vector<Eigen::Vector3d>& result)
+{
+  const std::size_t n = points.size();
+  Eigen::SparseMatrix<double> stiffness;
+  std::vector<double> masses;
+  cotangent_stiffness(mesh, points, stiffness, masses);
+  Eigen::SparseMatrix<double> system = time * stiffness;
+  Eigen::MatrixXd rhs(Eigen::Index(n), 3);
+  for(std::size_t i = 0; i < n; ++i)
+  {
+    system.coeffRef(Eigen::Index(i), Eigen::Index(i)) += masses[i];
+    rhs.row(Eigen::Index(i)) = masses[i] * points[i].transpose();
+  }
+  Sparse_cholesky cholesky;
+  silence(cholesky);
+  cholesky.compute(system);
+  if(cholesky.info() != Eigen::Success)
+    return false;
+  const Eigen::MatrixXd x = cholesky.solve(rhs);
+  if(cholesky.info() != Eigen::Success || !x.allFinite())
+    return false;
+  result.resize(n);
+  for(std::size_t i = 0; i < n; ++i)
+    result[i] = x.row(Eigen::Index(i)).transpose();
+  return true;
+}
+
+// The median over the faces of 2 area / (longest edge)^2: the smallest altitude over
+// the longest edge, 0.87 for an equilateral triangle, under 0.17 for a face whose
+// smallest angle is under 10 degrees (a needle).
+inline double median_face_aspect(const Indexed_mesh& mesh, const std::vector<Eigen::Vector3d>& points)
+{
+  std::vector<double> aspects;
+  aspects.reserve(mesh.triangles.size());
+  for(const auto& t : mesh.triangles)
+  {
+    const Eigen::Vector3d a = points[t[1]] - points[t[0]], b = points[t[2]] - points[t[1]],
+                          c = points[t[0]] - points[t[2]];
+    const double longest = (std::max)({a.squaredNorm(), b.squaredNorm(), c.squaredNorm()});
+    const double aspect = longest > 0 ? a.cross(c).norm() / longest : 0.;
+    if(std::isfinite(aspect))
+      aspects.push_back(aspect);
+  }
+  if(aspects.empty())
+    return 0.;
+  std::nth_element(aspects.begin(), aspects.begin() + std::ptrdiff_t(aspects.size() / 2), aspects.end());
+  return aspects[aspects.size() / 2];
+}
+
+// The vertex positions that best fit the face normals `normals` in one solve:
+// x = argmin sum_f a_f sum_{edges ij of f} (n_f . (x_j - x_i))^2 + lambda sum_i m_i |x_i - y_i|^2,
+// a_f the areas and m_i the barycentric masses of `anchors` (y), a sparse symmetric
+// positive definite system of 3n unknowns. The explicit update of Sun et al. moves a
+// vertex by a fraction of its faces' misfit per step, and needs hundreds of steps where
+// the faces are needles; the solve fits all the faces at once. The anchors hold the
+// tangential positions, which the normals leave free, and the scale. Both terms are
+// lengths to the fourth power: lambda has no unit. Returns false, leaving `points`
+// untouched, if neither the iterative solve nor the factorisation succeeds.
+inline bool fit_vertices_to_normals_least_squares(const Indexed_mesh& mesh, const std::vector<Eigen::Vector3d>& normals,
+                                                  const std::vector<Eigen::Vector3d>& anchors, double lambda,
+                                                  std::vector<Eigen::Vector3d>& points)
+{
+  const std::size_t n = anchors.size();
+  Eigen::SparseMatrix<double> unused;
+  std::vector<double> masses;
+  cotangent_stiffness(mesh, anchors, unused, masses);
+  std::vector<Eigen::Triplet<double> > triplets;
+  triplets.reserve(mesh.triangles.size() * 3 * 36 + 3 * n);
+  for(std::size_t f = 0; f < mesh.triangles.size(); ++f)
+  {
+    const auto& t = mesh.triangles[f];
+    const double area = 0.5 * (anchors[t[1]] - anchors[t[0]]).cross(anchors[t[2]] - anchors[t[0]]).norm();
+    if(!(area > 0) || !std::isfinite(area))
+      continue;
+    const Eigen::Matrix3d block = area * normals[f] * normals[f].transpose();
+    for(int e = 0; e < 3; ++e)
+    {
+      const Eigen::Index i = Eigen::Index(3 * t[e]), j = Eigen::Index(3 * t[(e + 1) % 3]);
+      for(int r = 0; r < 3; ++r)
+        for(int c = 0; c < 3; ++c)
+        {
+          triplets.emplace_back(i + r, i + c, block(r, c));
+          triplets.emplace_back(j + r, j + c, block(r, c));
+          triplets.emplace_back(i + r, j + c, -block(r, c));
+          triplets.emplace_back(j + r, i + c, -block(r, c));
+        }
+    }
+  }
+  Eigen::VectorXd rhs(Eigen::Index(3 * n));
+  for(std::size_t i = 0; i < n; ++i)
+    for(int r = 0; r < 3; ++r)
+    {
+      triplets.emplace_back(Eigen::Index(3 * i + r), Eigen::Index(3 * i + r), lambda * masses[i]);
+      rhs[Eigen::Index(3 * i + r)] = lambda * masses[i] * anchors[i][r];
+    }
+  Eigen::SparseMatrix<double> system{Eigen::Index(3 * n), Eigen::Index(3 * n)};
+  system.setFromTriplets(triplets.begin(), triplets.end());
+  // Conjugate gradients from the anchors, to a relative residual of 1e-10: a few hundred
+  // sparse products on CGAL's needle meshes, cheaper than the sparse Cholesky
+  // factorisation of this 3n system (its fill-in is large), with the same MAD to four
+  // digits there; the factorisation if they do not converge.
+  Eigen::VectorXd x(Eigen::Index(3 * n));
+  for(std::size_t i = 0; i < n; ++i)
+    x.segment<3>(Eigen::Index(3 * i)) = anchors[i];
+  Eigen::ConjugateGradient<Eigen::SparseMatrix<double>, Eigen::Lower | Eigen::Upper,
+                           Eigen::DiagonalPreconditioner<double> >
+      iterative;
+  iterative.setTolerance(1e-10);
+  iterative.setMaxIterations(Eigen::Index(2000));
+  iterative.compute(system);
+  if(iterative.info() == Eigen::Success)
+    x = iterative.solveWithGuess(rhs, Eigen::VectorXd(x));
+  if(iterative.info() != Eigen::Success || !x.allFinite())
+  {
+    Sparse_cholesky cholesky;
+    silence(cholesky);
+    cholesky.compute(system);
+    if(cholesky.info() != Eigen::Success)
+      return false;
+    x = cholesky.solve(rhs);
+    if(cholesky.info() != Eigen::Success || !x.allFinite())
+      return false;
+  }
+  points.resize(n);
+  for(std::size_t i = 0; i < n; ++i)
+    points[i] = x.segment<3>(Eigen::Index(3 * i));
+  return true;
+}
+
+} // namespace internal
+} // namespace Heat_diffusion
+} // namespace CGAL
+
+#endif // CGAL_HEAT_DIFFUSION_INTERNAL_DENOISING_NEEDLE_SURFACE_FIT_H
