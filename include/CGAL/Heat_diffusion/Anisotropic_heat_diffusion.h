@@ -192,7 +192,8 @@ public:
       internal::throw_invalid_input("Anisotropic_heat_diffusion: the scale-invariant kernel (eq. 14) needs the "
                                     "eigenvalues; use Heat_kernel_method::spectral");
     const double sigma =
-        internal::checked_sigma(choose_parameter(get_parameter(np, internal_np::sigma), 0.1), "Anisotropic_heat_diffusion");
+        internal::checked_sigma(choose_parameter(get_parameter(np, internal_np::sigma), internal::default_sigma),
+                                "Anisotropic_heat_diffusion");
     ncc_ = std::make_shared<NCC>(tm, np);
     const internal::Indexed_mesh& mesh = ncc_->indexed_mesh();
     if(mesh.number_of_vertices() == 0)

@@ -171,7 +171,7 @@ public:
     timings_.normal_controlled_coordinates = lap();
     using parameters::choose_parameter;
     using parameters::get_parameter;
-    sigma_ = choose_parameter(get_parameter(np, internal_np::sigma), 0.1);
+    sigma_ = choose_parameter(get_parameter(np, internal_np::sigma), internal::default_sigma);
     const double requested_m = double(choose_parameter(get_parameter(np, internal_np::number_of_eigenpairs), 150));
     scale_invariant_ = choose_parameter(get_parameter(np, internal_np::scale_invariant_kernel), false);
     const internal::Progress progress(

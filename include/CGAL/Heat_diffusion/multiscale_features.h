@@ -83,7 +83,9 @@ detect_multiscale_features(const Anisotropic_heat_diffusion<TriangleMesh, GeomTr
   typedef typename boost::graph_traits<TriangleMesh>::vertex_descriptor vertex_descriptor;
   const char* const function = "detect_multiscale_features";
   const double c = internal::checked_feature_threshold(
-      parameters::choose_parameter(parameters::get_parameter(np, internal_np::feature_threshold), 0.8), function);
+      parameters::choose_parameter(parameters::get_parameter(np, internal_np::feature_threshold),
+                                   internal::default_feature_threshold),
+      function);
 
   const TriangleMesh& tm = diffusion.normal_controlled_coordinates().mesh();
   const std::size_t n = diffusion.number_of_vertices();
@@ -192,7 +194,9 @@ detect_multiscale_features(const TriangleMesh& tm, const VertexFieldMap& field, 
   }
 
   const double c = internal::checked_feature_threshold(
-      parameters::choose_parameter(parameters::get_parameter(np, internal_np::feature_threshold), 0.8), function);
+      parameters::choose_parameter(parameters::get_parameter(np, internal_np::feature_threshold),
+                                   internal::default_feature_threshold),
+      function);
   // The user's numbering or the rank in vertices(tm), without gaps where a
   // Surface_mesh has removed vertices.
   const auto vim = internal::vertex_numbering(tm, np);

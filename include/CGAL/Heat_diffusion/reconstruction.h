@@ -132,7 +132,8 @@ void reconstruct_from_normal_signature(TriangleMesh& tm, const VertexNSMap& ns_m
   Eigen::VectorXd squared_anchor_weights(size);
   for(std::size_t i = 0; i < n; ++i)
   {
-    target.row(Eigen::Index(i)) = (signature[Eigen::Index(i)] * target_normals[i] + ncc.data().tangential_part[i]).transpose();
+    target.row(Eigen::Index(i)) =
+        (signature[Eigen::Index(i)] * target_normals[i] + ncc.data().tangential_part[i]).transpose();
     anchors.row(Eigen::Index(i)) = mesh.points[i].transpose();
     squared_anchor_weights[Eigen::Index(i)] = anchor_weight * anchor_weight / ncc.data().areas[i];
   }
