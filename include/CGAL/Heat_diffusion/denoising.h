@@ -11,6 +11,7 @@
 #include <CGAL/Heat_diffusion/reconstruction.h>
 #include <CGAL/Heat_diffusion/internal/Denoising/normal_filtering.h>
 #include <CGAL/Heat_diffusion/internal/Denoising/signature_normals.h>
+#include <CGAL/Heat_diffusion/internal/errors.h>
 
 #include <CGAL/Dynamic_property_map.h>
 #include <CGAL/boost/graph/named_params_helper.h>
@@ -262,18 +263,15 @@ void denoise_mesh(TriangleMesh& tm, const NamedParameters& np = parameters::defa
       choose_parameter(get_parameter(np, internal_np::progress_callback), std::function<bool(double)>());
   if(!(iterations >= 0) || !std::isfinite(iterations))
     internal::throw_invalid_input("denoise_mesh: number_of_iterations must not be negative");
-  if(!(sigma > 0))
-    internal::throw_invalid_input("denoise_mesh: sigma must be positive");
-  if(!(time > 0) || !std::isfinite(time))
-    internal::throw_invalid_input("denoise_mesh: time must be positive and finite");
+  internal::checked_sigma(sigma, "denoise_mesh");
+  internal::checked_positive(time, "denoise_mesh", "time");
   if(!(steps >= 0) || !std::isfinite(steps))
     internal::throw_invalid_input("denoise_mesh: number_of_steps must not be negative");
   if(!(eigenpairs >= 1) || !std::isfinite(eigenpairs))
     internal::throw_invalid_input("denoise_mesh: number_of_eigenpairs must be positive");
-  if(!(anchor_weight > 0) || !std::isfinite(anchor_weight))
-    internal::throw_invalid_input("denoise_mesh: anchor_weight must be positive and finite");
-  if(!automatic_normal_sigma && (!(user_normal_sigma > 0) || !std::isfinite(user_normal_sigma)))
-    internal::throw_invalid_input("denoise_mesh: normal_sigma must be positive and finite");
+  internal::checked_positive(anchor_weight, "denoise_mesh", "anchor_weight");
+  if(!automatic_normal_sigma)
+    internal::checked_positive(user_normal_sigma, "denoise_mesh", "normal_sigma");
   if(!(displacement_limit > 0))
     internal::throw_invalid_input("denoise_mesh: displacement_limit must be positive");
   if(internal::number_of_listed_vertices(tm) == 0 || iterations < 1)
