@@ -198,9 +198,7 @@ public:
     const internal::Indexed_mesh& mesh = ncc_->indexed_mesh();
     if(mesh.number_of_vertices() == 0)
       internal::throw_invalid_input("Anisotropic_heat_diffusion: the mesh is empty");
-    // L and B live only while A_t is built: A_t is all the diffusion needs.
-    const internal::Heat_operators operators = internal::assemble_heat_operators(mesh, ncc_->data(), sigma);
-    build_local(t, operators, progress);
+    build_local(t, internal::assemble_heat_operators(mesh, ncc_->data(), sigma), progress);
   }
 
   /// Builds \f$ A_t \f$ from an existing (spectral) kernel, which must outlive this object.
@@ -385,29 +383,55 @@ private:
       build(internal::Spectral_columns{kernel_->eigenvectors(), mass_diagonal});
   }
 
-  void build_local(double t, const internal::Heat_operators& operators, const internal::Progress& progress)
+  // (takes the operators: L and B live only while the kernel's columns are computed, and
+  // are freed, with the kernel, before A_t is completed: A_t is all the diffusion needs)
+  void build_local(double t, internal::Heat_operators operators, const internal::Progress& progress)
   {
     time_ = t;
-    const internal::Local_heat_kernel kernel(ncc_->indexed_mesh(), operators.stiffness, operators.mass, t);
-    // Sources cluster after cluster: consecutive sources share their patch and its
-    // factorisations.
-    build_from_columns(internal::Local_columns{kernel}, kernel.source_order(), kernel.cluster_begin(), progress);
+    Eigen::VectorXd column_sums, peaks;
+    {
+      const internal::Local_heat_kernel kernel(ncc_->indexed_mesh(), operators.stiffness, operators.mass, t);
+      // Sources cluster after cluster: consecutive sources share their patch and its
+      // factorisations.
+      compute_heat_regions(internal::Local_columns{kernel}, kernel.source_order(), kernel.cluster_begin(), progress,
+                           column_sums, peaks);
+    }
+    // (swapped with empty matrices: an assignment would keep their memory)
+    Eigen::SparseMatrix<double>().swap(operators.stiffness);
+    Eigen::SparseMatrix<double>().swap(operators.mass);
+    complete_operator(column_sums, peaks, progress);
   }
 
-  // The heat regions and the kernel values on them (internal::build_heat_regions()),
-  // then, balanced, their balancing.
   template <typename Columns>
   void build_from_columns(const Columns& columns, const std::vector<std::size_t>& order,
                           const std::vector<std::size_t>& group_begin, const internal::Progress& progress)
   {
+    Eigen::VectorXd column_sums, peaks;
+    compute_heat_regions(columns, order, group_begin, progress, column_sums, peaks);
+    complete_operator(column_sums, peaks, progress);
+  }
+
+  // The heat regions and the kernel values on them (internal::build_heat_regions()).
+  template <typename Columns>
+  void compute_heat_regions(const Columns& columns, const std::vector<std::size_t>& order,
+                            const std::vector<std::size_t>& group_begin, const internal::Progress& progress,
+                            Eigen::VectorXd& column_sums, Eigen::VectorXd& peaks)
+  {
     const bool balanced = diffusion_operator_.is_balanced();
     const internal::Heat_region_options options{threshold(), maximum_region_size, !balanced, spectral_group_size};
-    Eigen::VectorXd column_sums, peaks;
     // (the balancing takes a few products with K: a small part of the whole)
     internal::build_heat_regions(columns, ncc_->indexed_mesh(), order, group_begin, options,
                                  balanced ? progress.part(0., 0.95) : progress, diffusion_operator_.kernel_matrix(),
                                  statistics_, column_sums, peaks);
-    if(balanced)
+  }
+
+  // A_t from the kernel values: their matrix made ready for products and, balanced,
+  // balanced.
+  void complete_operator(const Eigen::VectorXd& column_sums, const Eigen::VectorXd& peaks,
+                         const internal::Progress& progress)
+  {
+    diffusion_operator_.kernel_matrix().finish();
+    if(diffusion_operator_.is_balanced())
       diffusion_operator_.balance(column_sums, peaks, balancing_tolerance, maximum_balancing_iterations,
                                   progress.part(0.95, 1.));
   }

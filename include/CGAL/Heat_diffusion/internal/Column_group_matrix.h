@@ -13,6 +13,7 @@
 
 #include <algorithm>
 #include <cstddef>
+#include <cstdint>
 #include <limits>
 #include <memory>
 #include <stdexcept>
@@ -37,6 +38,12 @@ namespace internal {
 // once, next to where it was computed, which lowers the peak memory by about a third
 // on large meshes. The price is in the product: a row lies in about 3 groups, so a
 // step is somewhat slower than in compressed rows (benchmark_local_kernel).
+//
+// An entry names its row by its place among its group's rows: a group has a few
+// hundred rows, so that place takes 16 bits in a block whose groups all have at most
+// 65536 rows (two bytes an entry less than a 32-bit row: a sixth of the matrix's
+// memory, and of the products' memory traffic), and 32 bits in the other blocks
+// (very large heat regions).
 class Column_group_matrix
 {
 public:
@@ -117,7 +124,13 @@ public:
     // parallel copies, not by one thread filling them with zeros)
     block.column_index.assign(sources, sources + columns);
     block.column_begin.reset(new Index[columns + 1]);
-    block.entry_row.reset(new Index[entries]);
+    bool narrow = true;
+    for(std::size_t g = 0; g < count; ++g)
+      narrow = narrow && groups[g].rows.size() <= std::size_t(1) << 16;
+    if(narrow)
+      block.narrow_entry_row.reset(new Narrow_row[entries]);
+    else
+      block.wide_entry_row.reset(new Index[entries]);
     block.values.reset(new double[entries]);
     block.column_begin[columns] = Index(entries);
     group_row_target_.resize(block.first_group_row + std::size_t(block.group_row_begin[count]));
@@ -128,8 +141,11 @@ public:
                 group_row_target_.begin() + std::ptrdiff_t(block.first_group_row) + first_row);
       for(std::size_t c = 0; c + 1 < group.column_begin.size(); ++c)
         block.column_begin[std::size_t(first_column) + c] = Index(entry_offset[g]) + group.column_begin[c];
-      for(std::size_t q = 0; q < group.entry_row.size(); ++q)
-        block.entry_row[entry_offset[g] + q] = first_row + group.entry_row[q];
+      if(narrow)
+        std::transform(group.entry_row.begin(), group.entry_row.end(),
+                       block.narrow_entry_row.get() + entry_offset[g], [](Index r) { return Narrow_row(r); });
+      else
+        std::copy(group.entry_row.begin(), group.entry_row.end(), block.wide_entry_row.get() + entry_offset[g]);
       std::copy(group.values.begin(), group.values.end(), block.values.get() + entry_offset[g]);
     }, 1);
     blocks_.push_back(std::move(block));
@@ -175,20 +191,19 @@ public:
   {
     CGAL_precondition(row_group_rows_.size() == group_row_target_.size());
     for(const Block& block : blocks_)
-    {
-      double* const sums = partial.data() + block.first_group_row;
-      const Block_arrays arrays(block);
-      parallel_for(block.group_row_begin.size() - 1, [&](std::size_t g) {
-        for(Index r = block.group_row_begin[g]; r < block.group_row_begin[g + 1]; ++r)
-          sums[r] = 0;
-        for(Index c = block.group_column_begin[g]; c < block.group_column_begin[g + 1]; ++c)
-        {
-          const double xj = x[Eigen::Index(arrays.column_index[c])];
-          for(Index q = arrays.column_begin[c]; q < arrays.column_begin[c + 1]; ++q)
-            sums[arrays.entry_row[q]] += arrays.values[q] * xj;
-        }
-      }, 1);
-    }
+      with_arrays(block, [&](const auto& arrays) {
+        parallel_for(block.group_row_begin.size() - 1, [&](std::size_t g) {
+          // the group's rows
+          double* const sums = partial.data() + block.first_group_row + std::size_t(block.group_row_begin[g]);
+          std::fill(sums, sums + (block.group_row_begin[g + 1] - block.group_row_begin[g]), 0.);
+          for(Index c = block.group_column_begin[g]; c < block.group_column_begin[g + 1]; ++c)
+          {
+            const double xj = x[Eigen::Index(arrays.column_index[c])];
+            for(Index q = arrays.column_begin[c]; q < arrays.column_begin[c + 1]; ++q)
+              sums[arrays.entry_row[q]] += arrays.values[q] * xj;
+          }
+        }, 1);
+      });
     parallel_for(n_, [&](std::size_t i) { y[Eigen::Index(i)] = sum_of_group_rows(i, partial); });
   }
 
@@ -204,32 +219,34 @@ public:
   {
     CGAL_precondition(row_group_rows_.size() == group_row_target_.size() && &x != &y);
     for(const Block& block : blocks_)
-    {
-      double* const sums = partial.data() + block.first_group_row;
-      double* const scaled = gathered.data() + block.first_group_row;
-      const Index* const targets = group_row_target_.data() + block.first_group_row;
-      const Block_arrays arrays(block);
-      parallel_for(block.group_row_begin.size() - 1, [&](std::size_t g) {
-        for(Index r = block.group_row_begin[g]; r < block.group_row_begin[g + 1]; ++r)
-        {
-          const Eigen::Index i = Eigen::Index(targets[r]);
-          sums[r] = 0;
-          scaled[r] = scaling[i] * x[i];
-        }
-        for(Index c = block.group_column_begin[g]; c < block.group_column_begin[g + 1]; ++c)
-        {
-          const Eigen::Index j = Eigen::Index(arrays.column_index[c]);
-          const double xj = scaling[j] * x[j];
-          double transposed = 0;
-          for(Index q = arrays.column_begin[c]; q < arrays.column_begin[c + 1]; ++q)
+      with_arrays(block, [&](const auto& arrays) {
+        parallel_for(block.group_row_begin.size() - 1, [&](std::size_t g) {
+          // the group's rows
+          const std::size_t first = block.first_group_row + std::size_t(block.group_row_begin[g]);
+          const std::size_t rows = std::size_t(block.group_row_begin[g + 1] - block.group_row_begin[g]);
+          double* const sums = partial.data() + first;
+          double* const scaled = gathered.data() + first;
+          const Index* const targets = group_row_target_.data() + first;
+          for(std::size_t r = 0; r < rows; ++r)
           {
-            sums[arrays.entry_row[q]] += arrays.values[q] * xj;
-            transposed += arrays.values[q] * scaled[arrays.entry_row[q]];
+            const Eigen::Index i = Eigen::Index(targets[r]);
+            sums[r] = 0;
+            scaled[r] = scaling[i] * x[i];
           }
-          y[j] = transposed;
-        }
-      }, 1);
-    }
+          for(Index c = block.group_column_begin[g]; c < block.group_column_begin[g + 1]; ++c)
+          {
+            const Eigen::Index j = Eigen::Index(arrays.column_index[c]);
+            const double xj = scaling[j] * x[j];
+            double transposed = 0;
+            for(Index q = arrays.column_begin[c]; q < arrays.column_begin[c + 1]; ++q)
+            {
+              sums[arrays.entry_row[q]] += arrays.values[q] * xj;
+              transposed += arrays.values[q] * scaled[arrays.entry_row[q]];
+            }
+            y[j] = transposed;
+          }
+        }, 1);
+      });
     const bool corrected = correction.size() > 0;
     parallel_for(n_, [&](std::size_t i) {
       const Eigen::Index k = Eigen::Index(i);
@@ -251,21 +268,27 @@ public:
       outer[j + 1] += outer[j];
     std::vector<std::pair<Index, double> > column;
     for(const Block& block : blocks_)
-      for(std::size_t c = 0; c < block.column_index.size(); ++c)
-      {
-        // (in the order the group first touched the rows)
-        column.clear();
-        for(Index q = block.column_begin[c]; q < block.column_begin[c + 1]; ++q)
-          column.emplace_back(group_row_target_[block.first_group_row + std::size_t(block.entry_row[std::size_t(q)])],
-                              block.values[std::size_t(q)]);
-        std::sort(column.begin(), column.end());
-        const std::size_t first = std::size_t(outer[std::size_t(block.column_index[c])]);
-        for(std::size_t k = 0; k < column.size(); ++k)
+      with_arrays(block, [&](const auto& arrays) {
+        for(std::size_t g = 0; g + 1 < block.group_column_begin.size(); ++g)
         {
-          matrix.innerIndexPtr()[first + k] = column[k].first;
-          matrix.valuePtr()[first + k] = column[k].second;
+          const Index* const targets =
+              group_row_target_.data() + block.first_group_row + std::size_t(block.group_row_begin[g]);
+          for(Index c = block.group_column_begin[g]; c < block.group_column_begin[g + 1]; ++c)
+          {
+            // (in the order the group first touched the rows)
+            column.clear();
+            for(Index q = arrays.column_begin[c]; q < arrays.column_begin[c + 1]; ++q)
+              column.emplace_back(targets[arrays.entry_row[q]], arrays.values[q]);
+            std::sort(column.begin(), column.end());
+            const std::size_t first = std::size_t(outer[std::size_t(arrays.column_index[c])]);
+            for(std::size_t k = 0; k < column.size(); ++k)
+            {
+              matrix.innerIndexPtr()[first + k] = column[k].first;
+              matrix.valuePtr()[first + k] = column[k].second;
+            }
+          }
         }
-      }
+      });
     return matrix;
   }
 
@@ -279,33 +302,48 @@ private:
     return sum;
   }
 
+  typedef std::uint16_t Narrow_row;
+
   // Groups appended together. Group g has the columns [group_column_begin[g],
   // group_column_begin[g + 1]) and the group rows first_group_row + [group_row_begin[g],
-  // group_row_begin[g + 1]) of the whole matrix; an entry's row is its group row, from
-  // first_group_row. (The large arrays are shared by copies: the matrix does not
-  // change once built.)
+  // group_row_begin[g + 1]) of the whole matrix; an entry's row is its place among its
+  // group's rows, in narrow_entry_row or else in wide_entry_row (see above). (The large
+  // arrays are shared by copies: the matrix does not change once built.)
   struct Block
   {
     std::size_t first_group_row = 0;
     std::vector<Index> group_column_begin, group_row_begin;
     std::vector<Index> column_index;  // per column, its index in the matrix
-    std::shared_ptr<Index[]> column_begin, entry_row;
+    std::shared_ptr<Index[]> column_begin;
+    std::shared_ptr<Narrow_row[]> narrow_entry_row;
+    std::shared_ptr<Index[]> wide_entry_row;
     std::shared_ptr<double[]> values;
   };
 
   // A block's arrays as raw pointers, for the products: the loads of the arrays'
   // addresses stay out of the loops.
+  template <typename Row>
   struct Block_arrays
   {
-    explicit Block_arrays(const Block& block)
-      : column_index(block.column_index.data()), column_begin(block.column_begin.get()),
-        entry_row(block.entry_row.get()), values(block.values.get())
+    Block_arrays(const Block& block, const Row* rows)
+      : column_index(block.column_index.data()), column_begin(block.column_begin.get()), entry_row(rows),
+        values(block.values.get())
     {}
     const Index* const column_index;
     const Index* const column_begin;
-    const Index* const entry_row;
+    const Row* const entry_row;
     const double* const values;
   };
+
+  // Calls f(Block_arrays) with the block's rows, narrow or wide.
+  template <typename F>
+  static void with_arrays(const Block& block, F f)
+  {
+    if(block.narrow_entry_row)
+      f(Block_arrays<Narrow_row>(block, block.narrow_entry_row.get()));
+    else
+      f(Block_arrays<Index>(block, block.wide_entry_row.get()));
+  }
 
   std::size_t n_ = 0, entries_ = 0;
   std::vector<Block> blocks_;

@@ -42,7 +42,8 @@ struct Heat_region_options
 // matrix keeps the columns group by group (`Column_group_matrix`). Without the
 // normalisation, `column_sums` and `peaks` receive each column's sum and h_t(j, j) (for
 // the balancing); `statistics` (a `Heat_region_statistics`) the sizes of the regions.
-// `progress` is told after each block of sources.
+// `progress` is told after each block of sources. The caller then calls
+// `matrix.finish()` (once the memory that computed the columns is freed).
 template <typename Columns, typename Statistics>
 void build_heat_regions(const Columns& kernel, const Indexed_mesh& mesh, const std::vector<std::size_t>& order,
                         std::vector<std::size_t> group_begin, const Heat_region_options& options,
@@ -174,7 +175,6 @@ void build_heat_regions(const Columns& kernel, const Indexed_mesh& mesh, const s
     first = last;
   }
   statistics.mean_size = double(total) / double(n);
-  matrix.finish();
 }
 
 } // namespace internal

@@ -174,11 +174,9 @@ public:
     // a ball of that radius still spans the reach of B^-1 e_j in edges. (Uncapped, long
     // edges make patches too small in edges: many more clusters lose too much heat and
     // are computed again on enlarged patches.)
-    const double longest_edge = initial_radius_ / reach_in_edges;
-    edge_length_.resize(mesh.fan.size());
-    for(std::size_t i = 0; i < n; ++i)
-      for(std::size_t q = mesh.fan_begin[i]; q < mesh.fan_begin[i + 1]; ++q)
-        edge_length_[q] = (std::min)(diffusion_length(i, mesh.fan[q]), longest_edge);
+    // (Computed where Dijkstra needs them, not stored: an array along the fans would
+    // take 8 bytes per halfedge, for a square root per edge of a patch.)
+    longest_edge_ = initial_radius_ / reach_in_edges;
     std::vector<std::size_t> begin;
     cluster_order_ = clustered_order(mesh, (std::max)(cluster_size, std::size_t(1)), &begin);
     cluster_begin_.assign(begin.begin(), begin.end());
@@ -299,6 +297,9 @@ private:
     return std::sqrt(0.5 * (lumped_mass_[i] + lumped_mass_[k]));
   }
 
+  // The length of the edge ik for the patches' Dijkstra (see the constructor).
+  double edge_length(std::size_t i, std::size_t k) const { return (std::min)(diffusion_length(i, k), longest_edge_); }
+
   void next_generation(Workspace& w) const
   {
     if(++w.generation == 0)  // wrapped around: the stamps would lie
@@ -348,7 +349,7 @@ private:
       {
         const std::size_t k = mesh_.fan[q];
         if(w.stamp[k] != w.generation || w.local[k] == not_in_patch)
-          reach(k, d + edge_length_[q]);
+          reach(k, d + edge_length(i, k));
       }
     }
     return w.heap.empty();
@@ -472,7 +473,7 @@ private:
   Local_kernel_mass mass_kind_;
   std::vector<double> lumped_mass_;
   double initial_radius_ = 0;
-  std::vector<double> edge_length_;  // along mesh_.fan
+  double longest_edge_ = 0;  // the cap of edge_length()
   std::vector<std::size_t> cluster_order_, cluster_begin_;
   std::vector<std::uint32_t> cluster_of_, position_in_cluster_;
 };
