@@ -74,7 +74,9 @@ enum class Denoising_method
 ///  4. if the result is then piecewise flat (its own noise level, measured as in 1, is
 ///     below 0.15 \f$ \hat\varepsilon \f$: CAD parts), the iterations go on, up to
 ///     `number_of_iterations` or until the vertices stop moving: flat parts and sharp
-///     creases are the fixed point of the filter;
+///     creases are the fixed point of the filter (not strips one face wide between two
+///     creases, such as the rims of thin walls, which these iterations erode: see the
+///     user manual);
 ///  5. otherwise the surface is curved: the range weights would freeze the noise into
 ///     false creases, so the input is filtered again with isotropic weights
 ///     (\f$ \sigma_n = \infty \f$) until the displacement of 3;

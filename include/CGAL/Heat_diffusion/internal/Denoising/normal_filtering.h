@@ -287,8 +287,17 @@ inline double start_curved_filtering(const Indexed_mesh& mesh, const Face_adjace
 //     square, `displacement_limit` times the noise level of the input;
 //  2. if the result is piecewise flat (its own noise level is below
 //     piecewise_flat_roughness times that of the input), the filter goes on for all the
-//     iterations: flat parts and creases are its fixed point, so more iterations only
-//     sharpen them;
+//     iterations: flat parts and creases between wide flat parts are its fixed point, so
+//     more iterations sharpen them. Not so a strip one face wide between two creases
+//     (the rims and chamfers of thin-walled parts): its faces have fewer neighbours in
+//     their own plane than across the creases, whose small weights (0.007 each at 90
+//     degrees) then win, and every iteration tilts the strip further into its walls.
+//     Measured on CGAL's turbine (2603 of its 18460 faces have their three vertices on
+//     creases of 40 degrees or more), with noise of only 0.02 mean edge length and
+//     this path: those faces go from 4.3 to 56 degrees of MAD over the 40 iterations
+//     and the volume shrinks by 17 %; with the clean normals put back on them after
+//     each diffusion, 0.3 noise ends at 3.6 degrees and -1.0 %. Unsolved (see the
+//     user manual);
 //  3. otherwise the surface is curved, and the normals are diffused isotropically from
 //     the input until the same displacement: the range weights would freeze the noise
 //     into false creases, and the stop keeps the shape's detail. On a mesh of needles
