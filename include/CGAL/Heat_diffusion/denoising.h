@@ -74,10 +74,16 @@ enum class Denoising_method
 ///  4. if the result is then piecewise flat (its own noise level, measured as in 1, is
 ///     below 0.15 \f$ \hat\varepsilon \f$: CAD parts), the iterations go on, up to
 ///     `number_of_iterations` or until the vertices stop moving: flat parts and sharp
-///     creases are the fixed point of the filter;
+///     creases are the fixed point of the filter (not strips one face wide between two
+///     creases, such as the rims of thin walls, which these iterations erode: see the
+///     user manual);
 ///  5. otherwise the surface is curved: the range weights would freeze the noise into
 ///     false creases, so the input is filtered again with isotropic weights
-///     (\f$ \sigma_n = \infty \f$) until the displacement of 3;
+///     (\f$ \sigma_n = \infty \f$) until the displacement of 3, with the noise level
+///     \f$ \hat\varepsilon \sqrt{1 - \rho^2} \f$ in place of \f$ \hat\varepsilon \f$, where
+///     \f$ \rho \,\hat\varepsilon \f$ is the noise level of the result of 3 measured as in 1: the
+///     shape's own detail, which the estimate of 1 includes and which adds to the noise in
+///     quadrature;
 ///  6. on a curved mesh of needle triangles this isotropic filtering starts from a
 ///     smoothed fit instead of the input. A face's normal moves by about the noise over
 ///     its smallest altitude, so that on needles the normals are mostly noise, which
