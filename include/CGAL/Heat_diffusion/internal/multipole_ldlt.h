@@ -212,11 +212,6 @@ public:
           dki[m] = di[m];
         }
         ukr = Four_doubles{1., 1., 1., 1.} * w.patch_heat[std::size_t(a)];
-        // (the arrays in local pointers: through `w`, the compiler reloads them from the
-        // workspace after every store, in the innermost loop)
-        const int* const factor_row = w.factor_row.data();
-        double* const factor_real = w.factor_real.data();
-        double* const factor_imag = w.factor_imag.data();
         for(; top < p; ++top)
         {
           const std::size_t i = std::size_t(w.pattern[std::size_t(top)]);
@@ -228,11 +223,11 @@ public:
           const std::size_t q0 = std::size_t(w.factor_begin[i]), q1 = q0 + std::size_t(w.factor_count[i]);
           for(std::size_t q = q0; q < q1; ++q)
           {
-            double* zr = yr + std::size_t(factor_row[q]) * Y;
-            double* zi = yi + std::size_t(factor_row[q]) * Y;
+            double* zr = yr + std::size_t(w.factor_row[q]) * Y;
+            double* zi = yi + std::size_t(w.factor_row[q]) * Y;
             Four_doubles fr, fi, gr, gi;
-            load_vector(fr, factor_real + q * K);
-            load_vector(fi, factor_imag + q * K);
+            load_vector(fr, w.factor_real.data() + q * K);
+            load_vector(fi, w.factor_imag.data() + q * K);
             load_vector(gr, zr);
             load_vector(gi, zi);
             gr -= fr * xr - fi * xi;
@@ -249,8 +244,8 @@ public:
           const Four_doubles lr = (xr * er + xi * ei) * scale, li = (xi * er - xr * ei) * scale;
           dkr -= lr * xr - li * xi;
           dki -= lr * xi + li * xr;
-          std::memcpy(factor_real + q1 * K, &lr, K * sizeof(double));
-          std::memcpy(factor_imag + q1 * K, &li, K * sizeof(double));
+          std::memcpy(w.factor_real.data() + q1 * K, &lr, K * sizeof(double));
+          std::memcpy(w.factor_imag.data() + q1 * K, &li, K * sizeof(double));
           load_vector(uir, w.heat_forward_real.data() + i * K);
           load_vector(uii, w.heat_forward_imag.data() + i * K);
           ukr -= lr * uir - li * uii;
