@@ -18,8 +18,11 @@
 #include <Eigen/Eigenvalues>
 
 #include <algorithm>
+#include <cmath>
 #include <limits>
 #include <map>
+#include <utility>
+#include <vector>
 
 namespace HD = CGAL::Heat_diffusion;
 typedef CGAL::Exact_predicates_inexact_constructions_kernel K;
@@ -469,6 +472,67 @@ void check_special_cases()
   CHECK_MESSAGE(worst <= 1e-12, "free function vs class: " << worst);
 }
 
+// The storage of A_t (internal::Column_group_matrix) where a group of columns has more
+// than 65536 rows (very large heat regions), whose entries then name their rows in 32
+// bits, next to a block of ordinary groups (16 bits): both products against the
+// compressed copy of the same matrix.
+void check_groups_of_many_rows()
+{
+  typedef HD::internal::Column_group_matrix Matrix;
+  typedef std::vector<std::pair<std::size_t, double> > Column;
+  const std::size_t n = 70000;
+  Matrix matrix(n);
+  Matrix::Scratch scratch = matrix.make_scratch();
+  auto value = [](std::size_t i, std::size_t j) { return 1. + double((i * 7 + j * 13) % 101) / 101.; };
+  // block 1: two groups of two short columns; block 2: one group of two columns over all rows
+  std::vector<Column> short_columns(4), long_columns(2);
+  for(std::size_t c = 0; c < 4; ++c)
+    for(std::size_t i = 10 * c; i < 10 * c + 25; ++i)
+      short_columns[c].emplace_back(i, value(i, c));
+  for(std::size_t c = 0; c < 2; ++c)
+    for(std::size_t k = 0; k < n; ++k)
+    {
+      const std::size_t i = (c == 0 ? k : n - 1 - k);
+      long_columns[c].emplace_back(i, value(i, 4 + c));
+    }
+  std::vector<Matrix::Group> groups(2);
+  Matrix::make_group(short_columns.data(), 2, scratch, groups[0]);
+  Matrix::make_group(short_columns.data() + 2, 2, scratch, groups[1]);
+  const std::vector<std::size_t> short_sources{0, 1, 2, 3}, long_sources{4, 5};
+  matrix.append(groups.data(), 2, short_sources.data());
+  Matrix::make_group(long_columns.data(), 2, scratch, groups[0]);
+  CHECK(groups[0].rows.size() == n);
+  matrix.append(groups.data(), 1, long_sources.data());
+  matrix.finish();
+
+  const Eigen::SparseMatrix<double> A = matrix.column_major();
+  CHECK(A.nonZeros() == Eigen::Index(4 * 25 + 2 * n));
+  CHECK(A.coeff(n - 1, 5) == value(n - 1, 5) && A.coeff(65536, 4) == value(65536, 4) && A.coeff(34, 3) == value(34, 3));
+  Eigen::VectorXd x(static_cast<Eigen::Index>(n)), scaling(static_cast<Eigen::Index>(n));
+  for(Eigen::Index i = 0; i < x.size(); ++i)
+  {
+    x[i] = std::sin(0.37 * double(i));
+    scaling[i] = 1. + 0.5 * std::cos(0.11 * double(i));
+  }
+  Eigen::VectorXd partial(static_cast<Eigen::Index>(matrix.number_of_group_rows())), gathered = partial, y;
+  y.resize(x.size());
+  matrix.multiply(x, y, partial);
+  const Eigen::VectorXd expected = A * x;
+  const double error = (y - expected).cwiseAbs().maxCoeff() / expected.cwiseAbs().maxCoeff();
+  CHECK_MESSAGE(error <= 1e-12, "groups of many rows: A x off by " << error);
+  const Eigen::VectorXd correction = 0.25 * scaling;
+  // (the product writes y_j of the matrix's columns only: A_t has all n, this matrix 6,
+  // whose zero columns leave y_j as it was)
+  y.setZero();
+  matrix.multiply_symmetric_part(x, y, scaling, correction, partial, gathered);
+  const Eigen::SparseMatrix<double> symmetric = 0.5 * (A + Eigen::SparseMatrix<double>(A.transpose()));
+  const Eigen::VectorXd expected_symmetric =
+      scaling.asDiagonal() * (symmetric * scaling.asDiagonal() * x) + correction.cwiseProduct(x);
+  const double symmetric_error =
+      (y - expected_symmetric).cwiseAbs().maxCoeff() / expected_symmetric.cwiseAbs().maxCoeff();
+  CHECK_MESSAGE(symmetric_error <= 1e-12, "groups of many rows: D (A + A^T) / 2 D x + c x off by " << symmetric_error);
+}
+
 int main()
 {
   try
@@ -480,6 +544,7 @@ int main()
     check_anisotropy();
     check_truncation_and_dense();
     check_special_cases();
+    check_groups_of_many_rows();
   }
   catch(const std::exception& e)
   {
