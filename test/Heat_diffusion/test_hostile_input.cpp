@@ -33,6 +33,7 @@
 #include <CGAL/boost/graph/copy_face_graph.h>
 #include <CGAL/boost/graph/generators.h>
 
+#include "fast_ply_output.h"  // the tool's fast output of fields
 #include "mesh_input.h"  // the tool's reading: its pre-checks and its fast reader
 #include "test_support.h"
 
@@ -576,6 +577,7 @@ void check_hostile()
 
 }  // namespace fast_reader
 
+
 // Non-manifold polygon soups: not a polygon mesh as they are; the documented repair
 // (PMP::orient_polygon_soup duplicates non-manifold vertices and edges) gives a mesh
 // the package processes.
@@ -1100,6 +1102,79 @@ void check_removed_elements()
   }
 }
 
+// The tool's fast PLY output of fields writes the bytes CGAL::IO::write_PLY writes for
+// the mesh with the fields and their colours as property maps: on a real mesh, with
+// and without fields, and on a mesh with a removed vertex (the file numbers the
+// vertices left); it declines, writing nothing, on a mesh with other properties.
+void check_fast_ply_output()
+{
+  namespace fo = heat_diffusion_cli::fast_output;
+  typedef std::vector<std::pair<std::string, std::vector<double> > > Fields;
+  auto color_of_first = [](const Fields& fields) {
+    return [&fields](std::size_t v) {
+      const double x = fields.front().second[v];
+      return CGAL::IO::Color((unsigned char)(int(std::abs(x) * 1000) % 256), 7, (unsigned char)(x < 0 ? 200 : 30));
+    };
+  };
+  auto with_cgal = [&](const Mesh& input, const Fields& fields) {
+    Mesh mesh = input;
+    for(const auto& field : fields)
+    {
+      auto map = mesh.add_property_map<Vertex, double>("v:" + field.first, 0.).first;
+      for(Vertex v : mesh.vertices())
+        map[v] = field.second[v.idx()];
+    }
+    if(!fields.empty())
+    {
+      auto colors = mesh.add_property_map<Vertex, CGAL::IO::Color>("v:color").first;
+      for(Vertex v : mesh.vertices())
+        colors[v] = color_of_first(fields)(v.idx());
+    }
+    std::ostringstream os(std::ios::binary);
+    CGAL::IO::set_binary_mode(os);
+    CGAL::IO::write_PLY(os, mesh, "a comment", CGAL::parameters::use_binary_mode(true));
+    return os.str();
+  };
+  auto fast = [&](const Mesh& mesh, const Fields& fields, bool& written) {
+    std::ostringstream os(std::ios::binary);
+    CGAL::IO::set_binary_mode(os);
+    written = fo::write_fields_ply(os, mesh, "a comment", fields, color_of_first(fields));
+    return os.str();
+  };
+  auto fields_of = [](const Mesh& mesh) {
+    Fields fields{{"first", {}}, {"second", {}}};
+    for(Vertex v : vertices(mesh))  // (sized num_vertices(): a removed vertex keeps its slot)
+    {
+      fields[0].second.resize(mesh.num_vertices());
+      fields[1].second.resize(mesh.num_vertices());
+      fields[0].second[v.idx()] = std::sin(3 * mesh.point(v).x()) - 0.25;
+      fields[1].second[v.idx()] = double(v.idx()) / 7.;
+    }
+    return fields;
+  };
+  Mesh garbage = test_support::load<Mesh>("elephant.off");
+  remove_a_vertex(garbage, 100);
+  for(const auto& named : {std::make_pair(std::string("fandisk.off"), test_support::load<Mesh>("fandisk.off")),
+                           std::make_pair(std::string("elephant.off with a removed vertex"), garbage)})
+  {
+    const Mesh& mesh = named.second;
+    for(const Fields& fields : {fields_of(mesh), Fields()})
+    {
+      bool written = false;
+      const std::string bytes = fast(mesh, fields, written);
+      CHECK_MESSAGE(written, named.first << ": the fast PLY output declined");
+      CHECK_MESSAGE(bytes == with_cgal(mesh, fields),
+                    named.first << " with " << fields.size() << " fields: the fast PLY output differs from CGAL's");
+    }
+  }
+  CHECK(garbage.has_garbage());
+  Mesh with_normals = test_support::load<Mesh>("fandisk.off");
+  with_normals.add_property_map<Vertex, CGAL::Epick::Vector_3>("v:normal");
+  bool written = true;
+  CHECK_MESSAGE(fast(with_normals, fields_of(with_normals), written).empty() && !written,
+                "the fast PLY output did not decline a mesh with another property");
+}
+
 int main()
 {
   try
@@ -1113,6 +1188,7 @@ int main()
     check_parameters();
     check_iterative_solver_on_components();
     check_removed_elements();
+    check_fast_ply_output();
   }
   catch(const std::exception& e)
   {

@@ -8,6 +8,7 @@
 #define CGAL_HEAT_DIFFUSION_TOOLS_CLI_OUTPUT_H
 
 #include "cli_errors.h"
+#include "fast_ply_output.h"
 
 #include <CGAL/IO/Color.h>
 #include <CGAL/Surface_mesh.h>
@@ -172,25 +173,28 @@ void write_fields_ply(Output_files& files, const std::string& path, const CGAL::
                       double half_range = 0.)
 {
   typedef CGAL::Surface_mesh<Point> Mesh;
-  Mesh mesh = input;  // the property maps are added to a copy
-  for(const auto& field : fields)
-  {
-    auto map = mesh.template add_property_map<typename Mesh::Vertex_index, double>("v:" + field.first, 0.).first;
-    for(auto v : mesh.vertices())
-      map[v] = field.second[v.idx()];
-  }
-  if(!fields.empty())
-  {
-    if(!(half_range > 0))
-      half_range = robust_half_range(fields.front().second);
-    auto colors = mesh.template add_property_map<typename Mesh::Vertex_index, CGAL::IO::Color>("v:color").first;
-    for(auto v : mesh.vertices())
-      colors[v] = diverging_color(fields.front().second[v.idx()], half_range);
-  }
+  const char* const comment = "written by CGAL Heat_diffusion";
+  if(!fields.empty() && !(half_range > 0))
+    half_range = robust_half_range(fields.front().second);
+  auto color_of = [&](std::size_t v) { return diverging_color(fields.front().second[v], half_range); };
   files.add(path, [&](std::ostream& os) {
     CGAL::IO::set_binary_mode(os);  // use_binary_mode() alone is ignored on streams: ASCII, 6 digits
-    return CGAL::IO::write_PLY(os, mesh, "written by CGAL Heat_diffusion",
-                               CGAL::parameters::use_binary_mode(true));
+    if(fast_output::write_fields_ply(os, input, comment, fields, color_of))
+      return true;
+    Mesh mesh = input;  // the property maps are added to a copy
+    for(const auto& field : fields)
+    {
+      auto map = mesh.template add_property_map<typename Mesh::Vertex_index, double>("v:" + field.first, 0.).first;
+      for(auto v : mesh.vertices())
+        map[v] = field.second[v.idx()];
+    }
+    if(!fields.empty())
+    {
+      auto colors = mesh.template add_property_map<typename Mesh::Vertex_index, CGAL::IO::Color>("v:color").first;
+      for(auto v : mesh.vertices())
+        colors[v] = color_of(v.idx());
+    }
+    return CGAL::IO::write_PLY(os, mesh, comment, CGAL::parameters::use_binary_mode(true));
   });
 }
 
