@@ -15,8 +15,11 @@
 #include "test_support.h"
 
 #include <algorithm>
+#include <limits>
 #include <map>
 #include <memory>
+#include <stdexcept>
+#include <string>
 
 #ifdef CGAL_LINKED_WITH_TBB
 #include <tbb/task_arena.h>
@@ -76,6 +79,37 @@ void test_hilbert_numbering()
             << edge_distance_mesh / double(mesh.number_of_edges()) << " -> "
             << edge_distance_package / double(mesh.number_of_edges()) << std::endl;
   CHECK(edge_distance_package < edge_distance_mesh / 10);
+  // The mesh is copied in the order of vertices(tm), while the curve is computed, then
+  // renumbered: the same arrays as a copy made with the curve's numbering.
+  {
+    auto index = get(CGAL::dynamic_vertex_property_t<std::size_t>(), mesh);
+    for(Vertex v : mesh.vertices())
+      put(index, v, renumbered.vertex_index(v));
+    const CGAL::Heat_diffusion::internal::Indexed_mesh direct =
+        CGAL::Heat_diffusion::internal::make_indexed_mesh(mesh, mesh.points(), index);
+    const CGAL::Heat_diffusion::internal::Indexed_mesh& copied = renumbered.indexed_mesh();
+    CHECK(direct.points == copied.points);
+    CHECK(direct.triangles == copied.triangles);
+    CHECK(direct.fan_begin == copied.fan_begin && direct.fan == copied.fan);
+    CHECK(direct.fan_is_closed == copied.fan_is_closed);
+    CHECK(direct.center == copied.center && direct.scale == copied.scale);
+  }
+  // A defect is reported with the vertex's number in vertices(tm), not along the curve.
+  {
+    Mesh broken = mesh;
+    const Vertex v(12345);
+    broken.point(v) = Mesh::Point(std::numeric_limits<double>::quiet_NaN(), 0., 0.);
+    std::string message;
+    try
+    {
+      const NCC ncc(broken);
+    }
+    catch(const std::invalid_argument& e)
+    {
+      message = e.what();
+    }
+    CHECK_MESSAGE(message.find("vertex 12345 ") != std::string::npos, "message: " << message);
+  }
   // the NCC operator, row and column by vertex_index()
   const NCC::Sparse_matrix a = renumbered.operator_matrix(), b = given.operator_matrix();
   CHECK(a.nonZeros() == b.nonZeros());

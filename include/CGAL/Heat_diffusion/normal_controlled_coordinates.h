@@ -119,27 +119,37 @@ public:
     const auto vpm = choose_parameter(get_parameter(np, CGAL::internal_np::vertex_point),
                                       get_const_property_map(CGAL::vertex_point, tm));
     const GeomTraits gt = choose_parameter<GeomTraits>(get_parameter(np, CGAL::internal_np::geom_traits));
-    // Large meshes are numbered along a Hilbert curve (memory order of the diffusion),
-    // unless the user gave the numbering.
+    // The user's numbering, or the order of vertices(tm) (not the mesh's own index
+    // map, which has gaps where a Surface_mesh has removed vertices): the numbers of
+    // the vertices in the messages of make_indexed_mesh().
+    internal::number_vertices(tm, np, index_);
+    // Large meshes are then numbered along a Hilbert curve (memory order of the
+    // diffusion), unless the user gave the numbering; the curve is computed while
+    // the mesh is copied and checked.
+    std::vector<std::size_t> hilbert_rank;
     if(parameters::is_default_parameter<NamedParameters, CGAL::internal_np::vertex_index_t>::value &&
-       internal::number_of_listed_vertices(tm) >= internal::spatial_order_threshold &&
-       internal::number_along_hilbert_curve(tm, vpm, index_))
+       internal::number_of_listed_vertices(tm) >= internal::spatial_order_threshold)
+      internal::parallel_invoke([&] { hilbert_rank = internal::ranks_along_hilbert_curve(tm, vpm); },
+                                [&] { mesh_ = internal::make_indexed_mesh(tm, vpm, index_); });
+    else
+      mesh_ = internal::make_indexed_mesh(tm, vpm, index_);
+    if(!hilbert_rank.empty())
     {
+      internal::renumber_vertices(mesh_, hilbert_rank);
+      for(auto v : vertices(tm))
+        put(index_, v, hilbert_rank[get(index_, v)]);
       try
       {
-        mesh_ = internal::make_indexed_mesh(tm, vpm, index_);
         data_ = internal::compute_ncc_data(mesh_, internal::vertex_normals(mesh_, tm, vpm, index_, gt, np));
         return;
       }
       catch(const std::invalid_argument&)
       {
         // again below, so that the message numbers the vertices as the mesh lists them
+        internal::number_vertices(tm, np, index_);
+        mesh_ = internal::make_indexed_mesh(tm, vpm, index_);
       }
     }
-    // The user's numbering, or the order of vertices(tm) (not the mesh's own index
-    // map, which has gaps where a Surface_mesh has removed vertices).
-    internal::number_vertices(tm, np, index_);
-    mesh_ = internal::make_indexed_mesh(tm, vpm, index_);
     data_ = internal::compute_ncc_data(mesh_, internal::vertex_normals(mesh_, tm, vpm, index_, gt, np));
   }
 

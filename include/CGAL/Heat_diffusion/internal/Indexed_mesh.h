@@ -5,6 +5,7 @@
 #define CGAL_HEAT_DIFFUSION_INTERNAL_INDEXED_MESH_H
 
 #include <CGAL/Heat_diffusion/internal/errors.h>
+#include <CGAL/Heat_diffusion/internal/parallel_for.h>
 
 #include <CGAL/Dynamic_property_map.h>
 #include <CGAL/Exact_predicates_inexact_constructions_kernel.h>
@@ -144,29 +145,25 @@ auto vertex_numbering(const TriangleMesh& tm, const NamedParameters& np)
 // (unless the user gives a vertex index map).
 constexpr std::size_t spatial_order_threshold = 100000;
 
-// Writes to `index` the rank of every vertex along a Hilbert curve of the vertex
-// positions (CGAL::hilbert_sort, deterministic): neighbouring vertices then get close
-// indices, and the sparse products of the diffusion, which are memory-bound, read
-// the field nearly sequentially. A Loop-subdivided mesh numbers its new vertices edge
-// by edge, far from their neighbours (benchmark_scale_curve --order measures a
-// diffusion step in both orders). Returns false, and changes
-// nothing, if a coordinate is not finite (make_indexed_mesh() reports it).
-template <typename TriangleMesh, typename VertexPointMap, typename VertexIndexMap>
-bool number_along_hilbert_curve(const TriangleMesh& tm, VertexPointMap vpm, VertexIndexMap index)
+// The rank of every vertex along a Hilbert curve of the vertex positions
+// (CGAL::hilbert_sort, deterministic), by the vertex's rank in vertices(tm): numbered
+// so, neighbouring vertices get close indices, and the sparse products of the
+// diffusion, which are memory-bound, read the field nearly sequentially. A
+// Loop-subdivided mesh numbers its new vertices edge by edge, far from their
+// neighbours (benchmark_scale_curve --order measures a diffusion step in both orders).
+// Empty if a coordinate is not finite (make_indexed_mesh() reports it).
+template <typename TriangleMesh, typename VertexPointMap>
+std::vector<std::size_t> ranks_along_hilbert_curve(const TriangleMesh& tm, VertexPointMap vpm)
 {
   typedef CGAL::Exact_predicates_inexact_constructions_kernel K;
-  typedef typename boost::graph_traits<TriangleMesh>::vertex_descriptor vertex_descriptor;
-  std::vector<vertex_descriptor> vertex_list;
   std::vector<K::Point_3> points;
-  vertex_list.reserve(number_of_listed_vertices(tm));
-  points.reserve(vertex_list.capacity());
-  for(vertex_descriptor v : vertices(tm))
+  points.reserve(number_of_listed_vertices(tm));
+  for(auto v : vertices(tm))
   {
     const auto& p = get(vpm, v);
     const double x = CGAL::to_double(p.x()), y = CGAL::to_double(p.y()), z = CGAL::to_double(p.z());
     if(!std::isfinite(x) || !std::isfinite(y) || !std::isfinite(z))
-      return false;
-    vertex_list.push_back(v);
+      return {};
     points.emplace_back(x, y, z);
   }
   std::vector<std::size_t> order(points.size());
@@ -175,9 +172,43 @@ bool number_along_hilbert_curve(const TriangleMesh& tm, VertexPointMap vpm, Vert
   // The parallel sort splits at the same medians as the sequential one: the same order.
   CGAL::hilbert_sort<CGAL::Parallel_if_available_tag>(order.begin(), order.end(),
                                                       Traits(CGAL::make_property_map(points)));
+  std::vector<std::size_t> rank(order.size());
   for(std::size_t k = 0; k < order.size(); ++k)
-    put(index, vertex_list[order[k]], k);
-  return true;
+    rank[order[k]] = k;
+  return rank;
+}
+
+// Renumbers the vertices of `mesh`: vertex i becomes new_index[i] (a permutation). The
+// result is the mesh make_indexed_mesh() builds with the new numbering: the same
+// triangles in the same order, and each fan in the same order.
+inline void renumber_vertices(Indexed_mesh& mesh, const std::vector<std::size_t>& new_index)
+{
+  const std::size_t n = mesh.number_of_vertices();
+  std::vector<Eigen::Vector3d> points(n);
+  std::vector<std::size_t> fan_begin(n + 1, 0);
+  std::vector<unsigned char> fan_is_closed(n);
+  for(std::size_t i = 0; i < n; ++i)
+  {
+    points[new_index[i]] = mesh.points[i];
+    fan_begin[new_index[i] + 1] = mesh.degree(i);
+    fan_is_closed[new_index[i]] = mesh.fan_is_closed[i];
+  }
+  for(std::size_t i = 0; i < n; ++i)
+    fan_begin[i + 1] += fan_begin[i];
+  std::vector<std::size_t> fan(mesh.fan.size());
+  parallel_for(n, [&](std::size_t i) {
+    std::size_t* out = fan.data() + fan_begin[new_index[i]];
+    for(std::size_t q = mesh.fan_begin[i]; q < mesh.fan_begin[i + 1]; ++q)
+      *out++ = new_index[mesh.fan[q]];
+  });
+  parallel_for(mesh.triangles.size(), [&](std::size_t t) {
+    for(std::size_t& v : mesh.triangles[t])
+      v = new_index[v];
+  });
+  mesh.points = std::move(points);
+  mesh.fan_begin = std::move(fan_begin);
+  mesh.fan = std::move(fan);
+  mesh.fan_is_closed = std::move(fan_is_closed);
 }
 
 // Builds the indexed copy of `tm`, and rejects what the package cannot process with

@@ -11,6 +11,7 @@
 #include <tbb/blocked_range.h>
 #include <tbb/enumerable_thread_specific.h>
 #include <tbb/parallel_for.h>
+#include <tbb/parallel_invoke.h>
 #include <tbb/task_arena.h>
 #endif
 
@@ -33,6 +34,19 @@ void parallel_for(std::size_t n, const Function& f, std::size_t grain_size = 102
 #else
   for(std::size_t i = 0; i < n; ++i)
     f(i);
+#endif
+}
+
+// Calls f() and g(), at the same time when CGAL is linked with TBB. An exception of
+// either is thrown once both have ended.
+template <typename F, typename G>
+void parallel_invoke(const F& f, const G& g)
+{
+#ifdef CGAL_LINKED_WITH_TBB
+  tbb::parallel_invoke(f, g);
+#else
+  f();
+  g();
 #endif
 }
 
