@@ -16,8 +16,7 @@
 #include <CGAL/Surface_mesh.h>
 
 #include <algorithm>
-#include <cstdint>
-#include <cstring>
+#include <initializer_list>
 #include <ostream>
 #include <sstream>
 #include <string>

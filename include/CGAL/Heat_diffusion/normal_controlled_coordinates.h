@@ -145,7 +145,8 @@ public:
       }
       catch(const std::invalid_argument&)
       {
-        // again below, so that the message numbers the vertices as the mesh lists them
+        // again in the order of vertices(tm), so that the message numbers the vertices
+        // as the mesh lists them
         internal::number_vertices(tm, np, index_);
         mesh_ = internal::make_indexed_mesh(tm, vpm, index_);
       }
