@@ -79,11 +79,15 @@ enum class Denoising_method
 ///     user manual);
 ///  5. otherwise the surface is curved: the range weights would freeze the noise into
 ///     false creases, so the input is filtered again with isotropic weights
-///     (\f$ \sigma_n = \infty \f$) until the displacement of 3, with the noise level
-///     \f$ \hat\varepsilon \sqrt{1 - \rho^2} \f$ in place of \f$ \hat\varepsilon \f$, where
-///     \f$ \rho \,\hat\varepsilon \f$ is the noise level of the result of 3 measured as in 1: the
-///     shape's own detail, which the estimate of 1 includes and which adds to the noise in
-///     quadrature;
+///     (\f$ \sigma_n = \infty \f$) in small iterations (one Jacobi step of the vertex fit,
+///     then a tangential relaxation \f$ v_i \leftarrow v_i + 0.1\,(I - n_i n_i^T)(\bar v_i - v_i) \f$,
+///     \f$ \bar v_i \f$ the mean of the neighbours), until the root mean square displacement
+///     from the input along the vertex normals reaches `displacement_limit` \f$ \times\,\hat\varepsilon_2 \f$,
+///     the last iteration cut back to reach it exactly. \f$ \hat\varepsilon_2 \f$ is the noise
+///     level of second differences: the median over the vertices of the distance along the
+///     normal of \f$ ((I - W)^2 p)_i \f$ from 0 (W the mean over the one-ring) divided by
+///     \f$ 0.6745 \f$ and by the norm of row i of \f$ (I - W)^2 \f$; the curvature of a smooth
+///     shape, which the estimate of 1 counts as noise, cancels in it to first order;
 ///  6. on a curved mesh of needle triangles this isotropic filtering starts from a
 ///     smoothed fit instead of the input. A face's normal moves by about the noise over
 ///     its smallest altitude, so that on needles the normals are mostly noise, which
@@ -98,10 +102,14 @@ enum class Denoising_method
 ///     to the face normals \f$ n_f \f$ of the input smoothed by the same flow for the time
 ///     \f$ 2 \nu \hat\varepsilon'^2 \f$ (the cotangent operator does not depend on the shape of
 ///     the triangles), where \f$ \hat\varepsilon' \f$ is the noise level of 1 measured along the
-///     normals of \f$ P \f$; the isotropic filtering then runs from the fit until the displacement
-///     from the input reaches `displacement_limit` times
-///     \f$ \hat\varepsilon + \min(1, \nu)(\hat\varepsilon' - \hat\varepsilon) \f$. Meshes of reasonable
-///     triangles (\f$ a \geq 0.5 \f$) are filtered as in 5.
+///     normals of \f$ P \f$; for \f$ \nu \geq 1 \f$ the isotropic filtering then runs from the fit
+///     in iterations of 2 until the root mean square displacement from the input reaches
+///     `displacement_limit` times \f$ \sqrt{1 - \rho^2}\,\hat\varepsilon' \f$, where
+///     \f$ \rho\,\hat\varepsilon \f$ is the noise level of the result of 3 measured as in 1 (the
+///     shape's own detail); for \f$ 0 < \nu < 1 \f$ the result is the blend, with weights
+///     \f$ 1 - \nu \f$ and \f$ \nu \f$, of that of 5 and that of these iterations stopped at
+///     \f$ \sqrt{1 - \rho^2}\,(\hat\varepsilon + \nu(\hat\varepsilon' - \hat\varepsilon)) \f$, both from the fit.
+///     Meshes of reasonable triangles (\f$ a \geq 0.5 \f$) are filtered as in 5.
 /// A `normal_sigma` given by the user replaces 3 to 6 by iterations with that width until
 /// the displacement of 3. A mesh whose noise level is 0 is left unchanged.
 ///
@@ -159,7 +167,7 @@ enum class Denoising_method
 ///     \cgalParamDefault{chosen by the algorithm (0.45, or infinite on curved surfaces)}
 ///   \cgalParamNEnd
 ///   \cgalParamNBegin{displacement_limit}
-///     \cgalParamDescription{normal filtering only: the multiple of the estimated noise level that the root mean square displacement from the input must reach to end the crease-preserving phase and the isotropic filtering (see above); `std::numeric_limits<double>::infinity()` runs all the iterations}
+///     \cgalParamDescription{normal filtering only: the multiple of the estimated noise level that the root mean square displacement from the input (along the vertex normals in the isotropic filtering of curved surfaces) must reach to end the crease-preserving phase and the isotropic filtering (see above); `std::numeric_limits<double>::infinity()` runs all the iterations}
 ///     \cgalParamType{`double`, positive}
 ///     \cgalParamDefault{`1`}
 ///   \cgalParamNEnd
