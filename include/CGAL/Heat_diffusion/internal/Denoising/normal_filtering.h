@@ -10,7 +10,9 @@
 #ifndef CGAL_HEAT_DIFFUSION_INTERNAL_DENOISING_NORMAL_FILTERING_H
 #define CGAL_HEAT_DIFFUSION_INTERNAL_DENOISING_NORMAL_FILTERING_H
 
+#include <CGAL/Heat_diffusion/internal/Denoising/face_adjacency.h>
 #include <CGAL/Heat_diffusion/internal/Denoising/needle_surface_fit.h>
+#include <CGAL/Heat_diffusion/internal/Denoising/noise_level.h>
 #include <CGAL/Heat_diffusion/internal/Indexed_mesh.h>
 #include <CGAL/Heat_diffusion/internal/parallel_for.h>
 #include <CGAL/Heat_diffusion/internal/progress.h>
@@ -32,208 +34,6 @@ namespace CGAL {
 namespace Heat_diffusion {
 namespace internal {
 
-// Face normals, areas and centroids of `points` on the triangles of `mesh`.
-inline void face_geometry(const Indexed_mesh& mesh, const std::vector<Eigen::Vector3d>& points,
-                          std::vector<Eigen::Vector3d>& normals, std::vector<double>& areas,
-                          std::vector<Eigen::Vector3d>& centroids)
-{
-  const std::size_t m = mesh.triangles.size();
-  normals.resize(m);
-  areas.resize(m);
-  centroids.resize(m);
-  for(std::size_t f = 0; f < m; ++f)
-  {
-    const auto& t = mesh.triangles[f];
-    const Eigen::Vector3d cross = (points[t[1]] - points[t[0]]).cross(points[t[2]] - points[t[0]]);
-    const double length = cross.norm();
-    areas[f] = 0.5 * length;
-    normals[f] = length > 0 ? Eigen::Vector3d(cross / length) : Eigen::Vector3d::Zero();
-    centroids[f] = (points[t[0]] + points[t[1]] + points[t[2]]) / 3.;
-  }
-}
-
-// The faces around each vertex, and the faces that share a vertex with each face.
-struct Face_adjacency
-{
-  std::vector<std::size_t> vertex_faces_begin, vertex_faces;
-  std::vector<std::size_t> face_faces_begin, face_faces;
-};
-
-inline Face_adjacency make_face_adjacency(const Indexed_mesh& mesh)
-{
-  const std::size_t n = mesh.number_of_vertices(), m = mesh.triangles.size();
-  Face_adjacency a;
-  a.vertex_faces_begin.assign(n + 1, 0);
-  for(const auto& t : mesh.triangles)
-    for(std::size_t v : t)
-      ++a.vertex_faces_begin[v + 1];
-  for(std::size_t i = 0; i < n; ++i)
-    a.vertex_faces_begin[i + 1] += a.vertex_faces_begin[i];
-  a.vertex_faces.resize(a.vertex_faces_begin[n]);
-  std::vector<std::size_t> fill(a.vertex_faces_begin.begin(), a.vertex_faces_begin.end() - 1);
-  for(std::size_t f = 0; f < m; ++f)
-    for(std::size_t v : mesh.triangles[f])
-      a.vertex_faces[fill[v]++] = f;
-
-  a.face_faces_begin.assign(1, 0);
-  std::vector<std::size_t> ring;
-  for(std::size_t f = 0; f < m; ++f)
-  {
-    ring.clear();
-    for(std::size_t v : mesh.triangles[f])
-      for(std::size_t k = a.vertex_faces_begin[v]; k < a.vertex_faces_begin[v + 1]; ++k)
-        if(a.vertex_faces[k] != f)
-          ring.push_back(a.vertex_faces[k]);
-    std::sort(ring.begin(), ring.end());
-    ring.erase(std::unique(ring.begin(), ring.end()), ring.end());
-    a.face_faces.insert(a.face_faces.end(), ring.begin(), ring.end());
-    a.face_faces_begin.push_back(a.face_faces.size());
-  }
-  return a;
-}
-
-// The noise level of `points`: the median over the interior vertices of the distance
-// of v_i, along its area-weighted normal, from the mean of its neighbours, divided by
-// sqrt(1 + 1/degree) (the neighbours' own noise) and by 0.6745 (the median of |X| for
-// a standard Gaussian X). Independent noise of standard deviation e along the normals
-// gives about e; a piecewise flat surface without noise gives 0, a smooth one a small
-// multiple of its curvature times the squared edge length. Each vertex is measured
-// against its own neighbours only, so uneven edge lengths do not bias it.
-// If `directions` is given, the normal of v_i is the area-weighted normal of those
-// positions (a smoothed copy of `points`) instead of that of `points`. On needle
-// triangles the normal of the noisy fan follows the noise of the neighbours (a thin fan
-// tilts with them), so that the distance along it misses much of the noise: the
-// estimate along the noisy normals is about half the true level on a mesh of needles,
-// and close to it along the normals of a smoothed copy.
-inline double plane_fit_noise_level(const Indexed_mesh& mesh, const Face_adjacency& adjacency,
-                                    const std::vector<Eigen::Vector3d>& points,
-                                    const std::vector<Eigen::Vector3d>* directions = nullptr)
-{
-  const std::vector<Eigen::Vector3d>& frame = directions != nullptr ? *directions : points;
-  const std::size_t n = mesh.number_of_vertices();
-  std::vector<double> distances;
-  distances.reserve(n);
-  for(int pass = 0; pass < 2 && distances.empty(); ++pass)  // boundary vertices only if there is nothing else
-    for(std::size_t i = 0; i < n; ++i)
-    {
-      const std::size_t degree = mesh.degree(i);
-      if(degree < 3 || (pass == 0 && !mesh.fan_is_closed[i]))
-        continue;
-      Eigen::Vector3d normal = Eigen::Vector3d::Zero(), mean = Eigen::Vector3d::Zero();
-      for(std::size_t k = adjacency.vertex_faces_begin[i]; k < adjacency.vertex_faces_begin[i + 1]; ++k)
-      {
-        const auto& t = mesh.triangles[adjacency.vertex_faces[k]];
-        normal += (frame[t[1]] - frame[t[0]]).cross(frame[t[2]] - frame[t[0]]);
-      }
-      for(std::size_t k = mesh.fan_begin[i]; k < mesh.fan_begin[i + 1]; ++k)
-        mean += points[mesh.fan[k]];
-      const double length = normal.norm();
-      if(!(length > 0))
-        continue;
-      const double d = std::abs(normal.dot(points[i] - mean / double(degree))) / length;
-      if(std::isfinite(d))
-        distances.push_back(d / std::sqrt(1. + 1. / double(degree)));
-    }
-  if(distances.empty())
-    return 0.;
-  std::nth_element(distances.begin(), distances.begin() + std::ptrdiff_t(distances.size() / 2), distances.end());
-  return distances[distances.size() / 2] / 0.6745;
-}
-
-// The noise level of `points` from second differences: the median over the vertices
-// whose neighbours are all interior of the distance, along the area-weighted normal of
-// v_i, of ((I - W)^2 p)_i from 0, W the uniform average over the one-ring, divided by
-// the norm of row i of (I - W)^2 (the factor by which that operator scales independent
-// noise at v_i) and by 0.6745. Like plane_fit_noise_level it reads about e for
-// independent noise of standard deviation e along the normals, but the first difference
-// (I - W) p of a smooth surface, its curvature times the squared edge length, is itself
-// smooth and cancels in the second: on the clean meshes it reads 0.044 mean edge length
-// on elephant and 0.060 on armadillo (plane_fit_noise_level: 0.15 and 0.11), and with
-// 0.1 mean edge length of noise along the normals 1.10 and 1.17 times the noise
-// (plane_fit_noise_level: 1.67 and 1.40).
-inline double second_difference_noise_level(const Indexed_mesh& mesh, const Face_adjacency& adjacency,
-                                            const std::vector<Eigen::Vector3d>& points)
-{
-  const std::size_t n = mesh.number_of_vertices();
-  std::vector<Eigen::Vector3d> first(n, Eigen::Vector3d::Zero());
-  for(std::size_t i = 0; i < n; ++i)
-  {
-    const std::size_t degree = mesh.degree(i);
-    if(degree == 0)
-      continue;
-    Eigen::Vector3d mean = Eigen::Vector3d::Zero();
-    for(std::size_t k = mesh.fan_begin[i]; k < mesh.fan_begin[i + 1]; ++k)
-      mean += points[mesh.fan[k]];
-    first[i] = points[i] - mean / double(degree);
-  }
-  std::vector<double> distances;
-  std::vector<std::pair<std::size_t, double> > row;
-  for(std::size_t i = 0; i < n; ++i)
-  {
-    const std::size_t degree = mesh.degree(i);
-    if(degree < 3 || !mesh.fan_is_closed[i])
-      continue;
-    bool interior = true;
-    for(std::size_t k = mesh.fan_begin[i]; k < mesh.fan_begin[i + 1]; ++k)
-      interior = interior && mesh.fan_is_closed[mesh.fan[k]] && mesh.degree(mesh.fan[k]) >= 3;
-    if(!interior)
-      continue;
-    Eigen::Vector3d normal = Eigen::Vector3d::Zero(), mean = Eigen::Vector3d::Zero();
-    for(std::size_t k = adjacency.vertex_faces_begin[i]; k < adjacency.vertex_faces_begin[i + 1]; ++k)
-    {
-      const auto& t = mesh.triangles[adjacency.vertex_faces[k]];
-      normal += (points[t[1]] - points[t[0]]).cross(points[t[2]] - points[t[0]]);
-    }
-    // Row i of (I - W)^2 = I - 2W + W^2.
-    row.clear();
-    row.push_back({i, 1.});
-    for(std::size_t k = mesh.fan_begin[i]; k < mesh.fan_begin[i + 1]; ++k)
-    {
-      const std::size_t j = mesh.fan[k];
-      mean += first[j];
-      row.push_back({j, -2. / double(degree)});
-      const double w = 1. / (double(degree) * double(mesh.degree(j)));
-      for(std::size_t l = mesh.fan_begin[j]; l < mesh.fan_begin[j + 1]; ++l)
-        row.push_back({mesh.fan[l], w});
-    }
-    std::sort(row.begin(), row.end());
-    double squares = 0, sum = 0;
-    for(std::size_t k = 0; k < row.size(); ++k)
-    {
-      sum += row[k].second;
-      if(k + 1 == row.size() || row[k + 1].first != row[k].first)
-      {
-        squares += sum * sum;
-        sum = 0;
-      }
-    }
-    const double length = normal.norm();
-    if(!(length > 0))
-      continue;
-    const double d = std::abs(normal.dot(first[i] - mean / double(degree))) / (length * std::sqrt(squares));
-    if(std::isfinite(d))
-      distances.push_back(d);
-  }
-  if(distances.empty())
-    return 0.;
-  std::nth_element(distances.begin(), distances.begin() + std::ptrdiff_t(distances.size() / 2), distances.end());
-  return distances[distances.size() / 2] / 0.6745;
-}
-
-// Area-weighted vertex normals of `points` (not normalised; zero for isolated vertices).
-inline void vertex_normals(const Indexed_mesh& mesh, const Face_adjacency& adjacency,
-                           const std::vector<Eigen::Vector3d>& points, std::vector<Eigen::Vector3d>& normals)
-{
-  const std::size_t n = points.size();
-  normals.assign(n, Eigen::Vector3d::Zero());
-  for(std::size_t i = 0; i < n; ++i)
-    for(std::size_t k = adjacency.vertex_faces_begin[i]; k < adjacency.vertex_faces_begin[i + 1]; ++k)
-    {
-      const auto& t = mesh.triangles[adjacency.vertex_faces[k]];
-      normals[i] += (points[t[1]] - points[t[0]]).cross(points[t[2]] - points[t[0]]);
-    }
-}
-
 // Tangential relaxation: every interior vertex moves by `weight` times the component
 // of (mean of its neighbours - v_i) in its tangent plane. It changes the shape only to
 // second order; it undoes the part of the noise that moved the vertices within the
@@ -243,7 +43,7 @@ inline void relax_tangentially(const Indexed_mesh& mesh, const Face_adjacency& a
                                std::vector<Eigen::Vector3d>& points, std::vector<Eigen::Vector3d>& scratch,
                                std::vector<Eigen::Vector3d>& normals)
 {
-  vertex_normals(mesh, adjacency, points, normals);
+  area_weighted_normals(mesh, adjacency, points, normals);
   scratch = points;
   parallel_for(points.size(), [&](std::size_t i) {
     const std::size_t degree = mesh.degree(i);
@@ -539,7 +339,7 @@ inline std::vector<Eigen::Vector3d> filter_normals(const Indexed_mesh& mesh, con
     const double limit = options.displacement_limit * second_difference_noise_level(mesh, adjacency, mesh.points);
     std::vector<Eigen::Vector3d> normals, previous;
     auto normal_displacement = [&]() {
-      vertex_normals(mesh, adjacency, points, normals);
+      area_weighted_normals(mesh, adjacency, points, normals);
       double squares = 0;
       for(std::size_t i = 0; i < n; ++i)
       {
