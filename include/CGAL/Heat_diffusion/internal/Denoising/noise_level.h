@@ -40,7 +40,8 @@ inline double plane_fit_noise_level(const Indexed_mesh& mesh, const Face_adjacen
                                     const std::vector<Eigen::Vector3d>& points,
                                     const std::vector<Eigen::Vector3d>* directions = nullptr)
 {
-  const std::vector<Eigen::Vector3d>& frame = directions != nullptr ? *directions : points;
+  std::vector<Eigen::Vector3d> normals;
+  area_weighted_normals(mesh, adjacency, directions != nullptr ? *directions : points, normals);
   const std::size_t n = mesh.number_of_vertices();
   std::vector<double> distances;
   distances.reserve(n);
@@ -50,12 +51,8 @@ inline double plane_fit_noise_level(const Indexed_mesh& mesh, const Face_adjacen
       const std::size_t degree = mesh.degree(i);
       if(degree < 3 || (pass == 0 && !mesh.fan_is_closed[i]))
         continue;
-      Eigen::Vector3d normal = Eigen::Vector3d::Zero(), mean = Eigen::Vector3d::Zero();
-      for(std::size_t k = adjacency.vertex_faces_begin[i]; k < adjacency.vertex_faces_begin[i + 1]; ++k)
-      {
-        const auto& t = mesh.triangles[adjacency.vertex_faces[k]];
-        normal += (frame[t[1]] - frame[t[0]]).cross(frame[t[2]] - frame[t[0]]);
-      }
+      const Eigen::Vector3d& normal = normals[i];
+      Eigen::Vector3d mean = Eigen::Vector3d::Zero();
       for(std::size_t k = mesh.fan_begin[i]; k < mesh.fan_begin[i + 1]; ++k)
         mean += points[mesh.fan[k]];
       const double length = normal.norm();
@@ -97,6 +94,8 @@ inline double second_difference_noise_level(const Indexed_mesh& mesh, const Face
       mean += points[mesh.fan[k]];
     first[i] = points[i] - mean / double(degree);
   }
+  std::vector<Eigen::Vector3d> normals;
+  area_weighted_normals(mesh, adjacency, points, normals);
   std::vector<double> distances;
   std::vector<std::pair<std::size_t, double> > row;
   for(std::size_t i = 0; i < n; ++i)
@@ -109,12 +108,8 @@ inline double second_difference_noise_level(const Indexed_mesh& mesh, const Face
       interior = interior && mesh.fan_is_closed[mesh.fan[k]] && mesh.degree(mesh.fan[k]) >= 3;
     if(!interior)
       continue;
-    Eigen::Vector3d normal = Eigen::Vector3d::Zero(), mean = Eigen::Vector3d::Zero();
-    for(std::size_t k = adjacency.vertex_faces_begin[i]; k < adjacency.vertex_faces_begin[i + 1]; ++k)
-    {
-      const auto& t = mesh.triangles[adjacency.vertex_faces[k]];
-      normal += (points[t[1]] - points[t[0]]).cross(points[t[2]] - points[t[0]]);
-    }
+    const Eigen::Vector3d& normal = normals[i];
+    Eigen::Vector3d mean = Eigen::Vector3d::Zero();
     // Row i of (I - W)^2 = I - 2W + W^2.
     row.clear();
     row.push_back({i, 1.});
