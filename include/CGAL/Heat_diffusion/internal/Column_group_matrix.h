@@ -12,6 +12,7 @@
 #include <Eigen/Sparse>
 
 #include <algorithm>
+#include <cmath>
 #include <cstddef>
 #include <cstdint>
 #include <limits>
@@ -41,9 +42,19 @@ namespace internal {
 //
 // An entry names its row by its place among its group's rows: a group has a few
 // hundred rows, so that place takes 16 bits in a block whose groups all have at most
-// 65536 rows (two bytes an entry less than a 32-bit row: a sixth of the matrix's
-// memory, and of the products' memory traffic), and 32 bits in the other blocks
-// (very large heat regions).
+// 65536 rows (two bytes an entry less than a 32-bit row), and 32 bits in the other
+// blocks (very large heat regions).
+//
+// An entry's value is kept in single precision, relative to a scale per column kept
+// in double precision: the value of entry (i, j) is value * column_scale[j]. The
+// kernel values are accurate to about 1e-5 at best (the local kernel's tolerance is
+// 1e-4), far above the float's relative rounding of 6e-8, and four bytes an entry less
+// take 40 % of the matrix's memory and of the products' memory traffic. The products
+// and the operators made from the matrix are in double precision on the rounded
+// values, so that what they promise exactly (a column of A_t summing to 1, symmetry,
+// rows of the balanced A_t summing to 1) holds to double rounding. A column's values are
+// stored divided by their sum, in (0, 1]: no float overflow or underflow whatever the
+// kernel's scale.
 class Column_group_matrix
 {
 public:
@@ -56,7 +67,8 @@ public:
     std::vector<Index> rows;          // the rows its columns touch, in the order first touched
     std::vector<Index> column_begin;  // per column, where its entries start; the end last
     std::vector<Index> entry_row;     // per entry, its row's place in `rows`
-    std::vector<double> values;
+    std::vector<float> values;        // per entry, its value / its column's scale
+    std::vector<double> column_scale;
   };
 
   // Per thread, for make_group(): the place of each row of the matrix among the group's
@@ -71,17 +83,32 @@ public:
 
   Scratch make_scratch() const { return Scratch{std::vector<Index>(n_, -1)}; }
 
+  // The value that the matrix keeps for `value` in a column of values summing to
+  // `column_sum` (> 0), with `normalize` false (see make_group()).
+  static double stored_value(double value, double column_sum)
+  {
+    return double(float(value / column_sum)) * column_sum;
+  }
+
   // Writes to `out` the group of the `count` columns `columns[k]`, each a list of
-  // (row, value).
+  // (row, value) whose values sum to a positive finite number. With `normalize`, each
+  // column is divided by the sum of its stored values: its entries sum to 1 to
+  // rounding.
   template <typename Column>
-  static void make_group(const Column* columns, std::size_t count, Scratch& s, Group& out)
+  static void make_group(const Column* columns, std::size_t count, Scratch& s, Group& out, bool normalize = false)
   {
     out.rows.clear();
     out.column_begin.assign(1, 0);
     out.entry_row.clear();
     out.values.clear();
+    out.column_scale.clear();
     for(std::size_t k = 0; k < count; ++k)
     {
+      double sum = 0;
+      for(const auto& entry : columns[k])
+        sum += entry.second;
+      CGAL_precondition(sum > 0 && std::isfinite(sum));
+      double stored_sum = 0;
       for(const auto& entry : columns[k])
       {
         Index& place = s.place[entry.first];
@@ -91,8 +118,10 @@ public:
           out.rows.push_back(Index(entry.first));
         }
         out.entry_row.push_back(place);
-        out.values.push_back(entry.second);
+        out.values.push_back(float(entry.second / sum));
+        stored_sum += double(out.values.back());
       }
+      out.column_scale.push_back(normalize ? 1. / stored_sum : sum);
       out.column_begin.push_back(Index(out.values.size()));
     }
     for(Index row : out.rows)
@@ -123,6 +152,7 @@ public:
     // (new[] leaves the arrays uninitialised: their pages are first written by the
     // parallel copies, not by one thread filling them with zeros)
     block.column_index.assign(sources, sources + columns);
+    block.column_scale.resize(columns);
     block.column_begin.reset(new Index[columns + 1]);
     bool narrow = true;
     for(std::size_t g = 0; g < count; ++g)
@@ -131,7 +161,7 @@ public:
       block.narrow_entry_row.reset(new Narrow_row[entries]);
     else
       block.wide_entry_row.reset(new Index[entries]);
-    block.values.reset(new double[entries]);
+    block.values.reset(new float[entries]);
     block.column_begin[columns] = Index(entries);
     group_row_target_.resize(block.first_group_row + std::size_t(block.group_row_begin[count]));
     parallel_for(count, [&](std::size_t g) {
@@ -141,6 +171,8 @@ public:
                 group_row_target_.begin() + std::ptrdiff_t(block.first_group_row) + first_row);
       for(std::size_t c = 0; c + 1 < group.column_begin.size(); ++c)
         block.column_begin[std::size_t(first_column) + c] = Index(entry_offset[g]) + group.column_begin[c];
+      std::copy(group.column_scale.begin(), group.column_scale.end(),
+                block.column_scale.begin() + std::ptrdiff_t(first_column));
       if(narrow)
         std::transform(group.entry_row.begin(), group.entry_row.end(),
                        block.narrow_entry_row.get() + entry_offset[g], [](Index r) { return Narrow_row(r); });
@@ -198,9 +230,9 @@ public:
           std::fill(sums, sums + (block.group_row_begin[g + 1] - block.group_row_begin[g]), 0.);
           for(Index c = block.group_column_begin[g]; c < block.group_column_begin[g + 1]; ++c)
           {
-            const double xj = x[Eigen::Index(arrays.column_index[c])];
+            const double xj = x[Eigen::Index(arrays.column_index[c])] * arrays.column_scale[c];
             for(Index q = arrays.column_begin[c]; q < arrays.column_begin[c + 1]; ++q)
-              sums[arrays.entry_row[q]] += arrays.values[q] * xj;
+              sums[arrays.entry_row[q]] += double(arrays.values[q]) * xj;
           }
         }, 1);
       });
@@ -236,14 +268,15 @@ public:
           for(Index c = block.group_column_begin[g]; c < block.group_column_begin[g + 1]; ++c)
           {
             const Eigen::Index j = Eigen::Index(arrays.column_index[c]);
-            const double xj = scaling[j] * x[j];
+            const double scale = arrays.column_scale[c], xj = scaling[j] * x[j] * scale;
             double transposed = 0;
             for(Index q = arrays.column_begin[c]; q < arrays.column_begin[c + 1]; ++q)
             {
-              sums[arrays.entry_row[q]] += arrays.values[q] * xj;
-              transposed += arrays.values[q] * scaled[arrays.entry_row[q]];
+              const double value = double(arrays.values[q]);
+              sums[arrays.entry_row[q]] += value * xj;
+              transposed += value * scaled[arrays.entry_row[q]];
             }
-            y[j] = transposed;
+            y[j] = transposed * scale;
           }
         }, 1);
       });
@@ -278,7 +311,7 @@ public:
             // (in the order the group first touched the rows)
             column.clear();
             for(Index q = arrays.column_begin[c]; q < arrays.column_begin[c + 1]; ++q)
-              column.emplace_back(targets[arrays.entry_row[q]], arrays.values[q]);
+              column.emplace_back(targets[arrays.entry_row[q]], double(arrays.values[q]) * arrays.column_scale[c]);
             std::sort(column.begin(), column.end());
             const std::size_t first = std::size_t(outer[std::size_t(arrays.column_index[c])]);
             for(std::size_t k = 0; k < column.size(); ++k)
@@ -313,11 +346,12 @@ private:
   {
     std::size_t first_group_row = 0;
     std::vector<Index> group_column_begin, group_row_begin;
-    std::vector<Index> column_index;  // per column, its index in the matrix
+    std::vector<Index> column_index;   // per column, its index in the matrix
+    std::vector<double> column_scale;  // per column (see above)
     std::shared_ptr<Index[]> column_begin;
     std::shared_ptr<Narrow_row[]> narrow_entry_row;
     std::shared_ptr<Index[]> wide_entry_row;
-    std::shared_ptr<double[]> values;
+    std::shared_ptr<float[]> values;
   };
 
   // A block's arrays as raw pointers, for the products: the loads of the arrays'
@@ -326,13 +360,14 @@ private:
   struct Block_arrays
   {
     Block_arrays(const Block& block, const Row* rows)
-      : column_index(block.column_index.data()), column_begin(block.column_begin.get()), entry_row(rows),
-        values(block.values.get())
+      : column_index(block.column_index.data()), column_scale(block.column_scale.data()),
+        column_begin(block.column_begin.get()), entry_row(rows), values(block.values.get())
     {}
     const Index* const column_index;
+    const double* const column_scale;
     const Index* const column_begin;
     const Row* const entry_row;
-    const double* const values;
+    const float* const values;
   };
 
   // Calls f(Block_arrays) with the block's rows, narrow or wide.

@@ -136,19 +136,17 @@ void build_heat_regions(const Columns& kernel, const Indexed_mesh& mesh, const s
       double sum = 0;
       for(const auto& entry : column)
         sum += entry.second;
-      // (balanced: the kernel values are kept, and balanced once every column is known)
+      // (normalised by make_group(); balanced: the kernel values are kept, and balanced
+      // once every column is known)
       if(!(column.front().second > 0) || !(sum > 0) || !std::isfinite(sum))
       {
         column.assign(1, {j, 1.});
         sum = 1.;
       }
-      else if(options.normalize_columns)
-        for(auto& entry : column)
-          entry.second /= sum;
       if(balanced)
       {
         column_sums[Eigen::Index(j)] = sum;
-        peaks[Eigen::Index(j)] = column.front().second;
+        peaks[Eigen::Index(j)] = Column_group_matrix::stored_value(column.front().second, sum);
       }
     };
     parallel_for_with_scratch(
@@ -157,7 +155,8 @@ void build_heat_regions(const Columns& kernel, const Indexed_mesh& mesh, const s
           const std::size_t begin = group_begin[group + g] - first, end = group_begin[group + g + 1] - first;
           for(std::size_t position = begin; position < end; ++position)
             compute_column(position, s);
-          Column_group_matrix::make_group(columns.data() + begin, end - begin, s.group_places, groups[g]);
+          Column_group_matrix::make_group(columns.data() + begin, end - begin, s.group_places, groups[g],
+                                          options.normalize_columns);
         },
         1);
     matrix.append(groups.data(), end_group - group, order.data() + first);
