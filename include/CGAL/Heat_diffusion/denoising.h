@@ -87,7 +87,10 @@ enum class Denoising_method
 ///     level of second differences: the median over the vertices of the distance along the
 ///     normal of \f$ ((I - W)^2 p)_i \f$ from 0 (W the mean over the one-ring) divided by
 ///     \f$ 0.6745 \f$ and by the norm of row i of \f$ (I - W)^2 \f$; the curvature of a smooth
-///     shape, which the estimate of 1 counts as noise, cancels in it to first order;
+///     shape, which the estimate of 1 counts as noise, cancels in it to first order.
+///     Then, where \f$ \hat\varepsilon_2 \f$ is above 0.12 mean edge lengths, up to 30 more
+///     tangential relaxations (their number ramps from 0 to 30 between 0.12 and 0.17 mean
+///     edge lengths): noise in random directions moves the vertices within the surface too;
 ///  6. on a curved mesh of needle triangles this isotropic filtering starts from a
 ///     smoothed fit instead of the input. A face's normal moves by about the noise over
 ///     its smallest altitude, so that on needles the normals are mostly noise, which
