@@ -263,8 +263,9 @@ inline double start_curved_filtering(const Indexed_mesh& mesh, const Face_adjace
 //     the input (the range weights would freeze the noise into false creases) in small
 //     iterations with a tangential relaxation, until the displacement along the
 //     normals reaches the noise level of second differences, which keeps the shape's
-//     detail. On a mesh of needles (needle factor nu > 0, see needle_reference_aspect)
-//     the filter starts from the fit to a smoothed copy instead of the input; for
+//     detail, then relaxed tangentially where that noise level is large
+//     (final_relaxation_steps()). On a mesh of needles (needle factor nu > 0, see
+//     needle_reference_aspect) the filter starts from the fit to a smoothed copy instead of the input; for
 //     nu >= 1 it runs the coarse iterations, stopped on the whole displacement with the
 //     noise level measured along the smoothed normals, and for 0 < nu < 1 the two
 //     results are blended.
