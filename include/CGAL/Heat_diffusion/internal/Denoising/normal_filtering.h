@@ -209,11 +209,7 @@ inline double start_curved_filtering(const Indexed_mesh& mesh, const Face_adjace
 {
   points = mesh.points;
   needle_factor_out = 0;
-  double mean_edge = 0;
-  for(const auto& t : mesh.triangles)
-    for(int e = 0; e < 3; ++e)
-      mean_edge += (mesh.points[t[e]] - mesh.points[t[(e + 1) % 3]]).norm();
-  mean_edge /= double(3 * mesh.triangles.size());
+  const double mean_edge = mean_edge_length(mesh);
   std::vector<Eigen::Vector3d> pilot;
   if(!(mean_edge > 0) || !std::isfinite(mean_edge) ||
      !implicit_smoothing(mesh, mesh.points, mean_edge * mean_edge, pilot))
