@@ -68,9 +68,18 @@ enum class Denoising_method
 ///     across creases; then moves the vertices so that the faces fit the diffused normals
 ///     (five Jacobi steps of \f$ v_i \leftarrow v_i + \frac{1}{|F_i|}\sum_{f \ni v_i} n_f n_f^T (c_f - v_i) \f$,
 ///     the vertex update of Sun et al. 2007);
-///  3. with \f$ \sigma_n = 0.45 \f$ (faces across a crease of 40 degrees or more weigh each
-///     other less than a third), the iterations run until the root mean square
-///     displacement of the vertices reaches `displacement_limit` \f$ \times\, \hat\varepsilon \f$;
+///  3. with a width \f$ \sigma_f \f$ per face, the weight between f and g being
+///     \f$ e^{-|n_f - n_g|^2/(\sigma_f^2 + \sigma_g^2)} \f$, the iterations run until the root
+///     mean square displacement of the vertices reaches `displacement_limit`
+///     \f$ \times\, \hat\varepsilon \f$. \f$ \sigma_f \f$ is \f$ \max(0.75\,\tau_f, 1.5\,\beta_f) \f$
+///     clamped to [0.2, 0.45] (at 0.45 faces across a crease of 40 degrees or more weigh each
+///     other less than a third): \f$ \tau_f = \hat\varepsilon \sqrt{\sum_i |e_i|^2} / (2 A_f) \f$ is the
+///     tilt that the noise gives the normal of f (\f$ e_i \f$ its edges, \f$ A_f \f$ its area), and
+///     \f$ \beta_f \f$ the area-weighted mean of \f$ |n_f - n_g| \f$ over the faces g sharing a
+///     vertex with f on the input smoothed by the implicit cotangent flow for the time
+///     \f$ 9 \bar e^2 \f$ (\f$ \bar e \f$ the mean edge length): how much the shape itself turns
+///     there. Narrow widths keep the flat parts from leaking across creases; wider ones keep
+///     the noise and the shape's curvature from being frozen into false creases;
 ///  4. if the result is then piecewise flat (its own noise level, measured as in 1, is
 ///     below 0.15 \f$ \hat\varepsilon \f$: CAD parts), the iterations go on, up to
 ///     `number_of_iterations` or until the vertices stop moving: flat parts and sharp
@@ -167,7 +176,7 @@ enum class Denoising_method
 ///   \cgalParamNBegin{normal_sigma}
 ///     \cgalParamDescription{normal filtering only: the width \f$ \sigma_n \f$ of the normal weights, used for all iterations (see above); smaller keeps more creases, and more noise}
 ///     \cgalParamType{`double`, positive}
-///     \cgalParamDefault{chosen by the algorithm (0.45, or infinite on curved surfaces)}
+///     \cgalParamDefault{chosen by the algorithm (a width per face from 0.2 to 0.45, see above, or infinite on curved surfaces)}
 ///   \cgalParamNEnd
 ///   \cgalParamNBegin{displacement_limit}
 ///     \cgalParamDescription{normal filtering only: the multiple of the estimated noise level that the root mean square displacement from the input (along the vertex normals in the isotropic filtering of curved surfaces) must reach to end the crease-preserving phase and the isotropic filtering (see above); `std::numeric_limits<double>::infinity()` runs all the iterations}

@@ -80,6 +80,17 @@ inline Face_adjacency make_face_adjacency(const Indexed_mesh& mesh)
   return a;
 }
 
+// The mean length of the edges of the triangles of `mesh` (each interior edge counted
+// twice).
+inline double mean_edge_length(const Indexed_mesh& mesh)
+{
+  double sum = 0;
+  for(const auto& t : mesh.triangles)
+    for(std::size_t e = 0; e < 3; ++e)
+      sum += (mesh.points[t[e]] - mesh.points[t[(e + 1) % 3]]).norm();
+  return mesh.triangles.empty() ? 0. : sum / (3. * double(mesh.triangles.size()));
+}
+
 // Area-weighted vertex normals of `points` (not normalised; zero for isolated vertices).
 inline void area_weighted_normals(const Indexed_mesh& mesh, const Face_adjacency& adjacency,
                                   const std::vector<Eigen::Vector3d>& points, std::vector<Eigen::Vector3d>& normals)

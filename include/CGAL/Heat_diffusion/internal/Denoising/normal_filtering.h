@@ -13,6 +13,7 @@
 #include <CGAL/Heat_diffusion/internal/Denoising/face_adjacency.h>
 #include <CGAL/Heat_diffusion/internal/Denoising/needle_surface_fit.h>
 #include <CGAL/Heat_diffusion/internal/Denoising/noise_level.h>
+#include <CGAL/Heat_diffusion/internal/Denoising/normal_widths.h>
 #include <CGAL/Heat_diffusion/internal/Indexed_mesh.h>
 #include <CGAL/Heat_diffusion/internal/parallel_for.h>
 #include <CGAL/Heat_diffusion/internal/progress.h>
@@ -26,7 +27,6 @@
 #include <algorithm>
 #include <cmath>
 #include <cstddef>
-#include <limits>
 #include <utility>
 #include <vector>
 
@@ -60,24 +60,30 @@ inline void relax_tangentially(const Indexed_mesh& mesh, const Face_adjacency& a
 }
 
 // One step of the anisotropic diffusion of the face normals:
-// n_f <- normalise(sum_{g in {f} u R(f)} a_g exp(-|n_f - n_g|^2 / 2 sigma_n^2) n_g),
+// n_f <- normalise(sum_{g in {f} u R(f)} a_g exp(-|n_f - n_g|^2 / (sigma_f^2 + sigma_g^2)) n_g),
 // R(f) the faces sharing a vertex with f: the edge weights of eq. 10 with the normals
-// in place of the NCC. No spatial weight: R(f) is already the smallest neighbourhood,
-// and a width in units of a global length would weigh the neighbours of small and
-// large faces differently. sigma_n = infinity diffuses isotropically. `next` is
+// in place of the NCC, with a width sigma_f per face (`widths`, see
+// crease_preserving_widths(); equal widths give the weight exp(-|n_f - n_g|^2 / 2 sigma^2)
+// of eq. 10). No spatial weight: R(f) is already the smallest neighbourhood, and a width
+// in units of a global length would weigh the neighbours of small and large faces
+// differently. Empty `widths` diffuse isotropically (sigma = infinity). `next` is
 // scratch space.
-inline void diffuse_face_normals(const Face_adjacency& adjacency, const std::vector<double>& areas, double sigma_n,
-                                 std::vector<Eigen::Vector3d>& normals, std::vector<Eigen::Vector3d>& next)
+inline void diffuse_face_normals(const Face_adjacency& adjacency, const std::vector<double>& areas,
+                                 const std::vector<double>& widths, std::vector<Eigen::Vector3d>& normals,
+                                 std::vector<Eigen::Vector3d>& next)
 {
   const std::size_t m = normals.size();
   next.resize(m);
-  const double range = std::isinf(sigma_n) ? 0. : 1. / (2. * sigma_n * sigma_n);
+  const bool isotropic = widths.empty();
   parallel_for(m, [&](std::size_t f) {
     Eigen::Vector3d sum = areas[f] * normals[f];
     for(std::size_t k = adjacency.face_faces_begin[f]; k < adjacency.face_faces_begin[f + 1]; ++k)
     {
       const std::size_t g = adjacency.face_faces[k];
-      sum += areas[g] * std::exp(-(normals[f] - normals[g]).squaredNorm() * range) * normals[g];
+      const double weight = isotropic ? 1.
+                                      : std::exp(-(normals[f] - normals[g]).squaredNorm() /
+                                                 (widths[f] * widths[f] + widths[g] * widths[g]));
+      sum += areas[g] * weight * normals[g];
     }
     const double length = sum.norm();
     next[f] = length > 0 && std::isfinite(length) ? Eigen::Vector3d(sum / length) : normals[f];
@@ -127,10 +133,6 @@ struct Normal_filtering_options
   double displacement_limit = 1.;
 };
 
-// The width of the normal weights that keeps creases: two faces of a crease of 40
-// degrees or more (|n_f - n_g| >= 0.68) weigh each other less than a third.
-constexpr double crease_preserving_sigma = 0.45;
-
 // Needle meshes (curved surfaces only). A face's normal moves by about the noise over
 // its smallest altitude, that is over a times its longest edge, a = 2 area / longest
 // edge^2 its aspect (0.87 for an equilateral triangle): where the median aspect a is
@@ -155,10 +157,12 @@ constexpr double needle_smoothing_time = 2.;
 constexpr double needle_fit_anchor_weight = 0.01;
 
 // A surface that the crease-preserving filter makes flat to within this fraction of the
-// noise level is taken for piecewise flat (CAD parts: 0.02 to 0.11 of it on CGAL's
-// fandisk and anchor_dense with 0.3 to 0.5 mean edge length of noise); curved surfaces
-// keep a roughness of at least 0.2 of it (elephant, armadillo, the needle-triangle
-// blade), which the filter would only turn into false creases.
+// noise level is taken for piecewise flat (CAD parts: 0.02 to 0.14 of it on CGAL's
+// fandisk and anchor_dense with 0.1 to 0.5 mean edge length of noise, but 0.16 on
+// anchor_dense at 0.5 in random directions); curved surfaces keep more (elephant: 0.16
+// to 0.53, armadillo 0.16 to 0.35 up to 0.3 noise; the needle-triangle blade), which the
+// filter would only turn into false creases. The test is close on some meshes (see the
+// user manual: elephant at 0.5 noise, ALSTOM_TEST4 at 0.3).
 constexpr double piecewise_flat_roughness = 0.15;
 
 // The isotropic filtering of a curved surface (see filter_normals) in small iterations:
@@ -188,17 +192,6 @@ inline std::size_t final_relaxation_steps(double noise_in_mean_edges)
 {
   const double ramp = (std::max)(0., (std::min)(1., (noise_in_mean_edges - 0.12) / 0.05));
   return std::size_t(std::lround(30. * ramp));
-}
-
-// The mean length of the edges of the triangles of `mesh` (each interior edge counted
-// twice).
-inline double mean_edge_length(const Indexed_mesh& mesh)
-{
-  double sum = 0;
-  for(const auto& t : mesh.triangles)
-    for(std::size_t e = 0; e < 3; ++e)
-      sum += (mesh.points[t[e]] - mesh.points[t[(e + 1) % 3]]).norm();
-  return mesh.triangles.empty() ? 0. : sum / (3. * double(mesh.triangles.size()));
 }
 
 // The start of the isotropic filtering of a curved surface (see filter_normals): the
@@ -240,8 +233,9 @@ inline double start_curved_filtering(const Indexed_mesh& mesh, const Face_adjace
 
 // Runs the filter on `points` (the normalised frame of `mesh`), starting from the input
 // positions. Without a user normal_sigma:
-//  1. the crease-preserving filter runs until the vertices have moved, in root mean
-//     square, `displacement_limit` times the noise level of the input;
+//  1. the crease-preserving filter, with a width per face adapted to the noise and to
+//     the shape's bending (crease_preserving_widths()), runs until the vertices have
+//     moved, in root mean square, `displacement_limit` times the noise level of the input;
 //  2. if the result is piecewise flat (its own noise level is below
 //     piecewise_flat_roughness times that of the input), the filter goes on for all the
 //     iterations: flat parts and creases between wide flat parts are its fixed point, so
@@ -287,11 +281,11 @@ inline std::vector<Eigen::Vector3d> filter_normals(const Indexed_mesh& mesh, con
     return std::sqrt(squares / double(n));
   };
   // One iteration; returns the root mean square move of the vertices.
-  auto iterate = [&](double sigma_n, std::size_t fit_steps = 5, double tangential_weight = 0) {
+  auto iterate = [&](const std::vector<double>& widths, std::size_t fit_steps = 5, double tangential_weight = 0) {
     const std::vector<Eigen::Vector3d> before = points;
     face_geometry(mesh, points, face_normals, areas, centroids);
     for(std::size_t step = 0; step < options.steps; ++step)
-      diffuse_face_normals(adjacency, areas, sigma_n, face_normals, face_scratch);
+      diffuse_face_normals(adjacency, areas, widths, face_normals, face_scratch);
     fit_vertices_to_normals(mesh, adjacency, face_normals, fit_steps, points, centroids, vertex_scratch);
     if(tangential_weight > 0)
       relax_tangentially(mesh, adjacency, tangential_weight, points, vertex_scratch, face_scratch);
@@ -302,10 +296,10 @@ inline std::vector<Eigen::Vector3d> filter_normals(const Indexed_mesh& mesh, con
       squares += (points[i] - before[i]).squaredNorm();
     return std::sqrt(squares / double(n));
   };
-  auto run_to_limit = [&](double sigma_n, double limit) {
+  auto run_to_limit = [&](const std::vector<double>& widths, double limit) {
     for(std::size_t it = 0; it < options.iterations; ++it)
     {
-      iterate(sigma_n);
+      iterate(widths);
       if(displacement() >= limit)
         break;
     }
@@ -313,16 +307,17 @@ inline std::vector<Eigen::Vector3d> filter_normals(const Indexed_mesh& mesh, con
 
   if(options.normal_sigma > 0)
   {
-    run_to_limit(options.normal_sigma, options.displacement_limit * noise);
+    run_to_limit(std::vector<double>(mesh.triangles.size(), options.normal_sigma), options.displacement_limit * noise);
     return points;
   }
-  run_to_limit(crease_preserving_sigma, options.displacement_limit * noise);
+  const std::vector<double> widths = crease_preserving_widths(mesh, adjacency, noise);
+  run_to_limit(widths, options.displacement_limit * noise);
   const std::size_t first_phase = done;
   const double roughness = plane_fit_noise_level(mesh, adjacency, points);
   if(roughness < piecewise_flat_roughness * noise)
   {
     for(std::size_t it = first_phase; it < options.iterations; ++it)
-      if(iterate(crease_preserving_sigma) < 1e-4 * noise)  // converged
+      if(iterate(widths) < 1e-4 * noise)  // converged
         break;
     return points;
   }
@@ -343,7 +338,7 @@ inline std::vector<Eigen::Vector3d> filter_normals(const Indexed_mesh& mesh, con
   const double detail_free = std::sqrt((std::max)(0., 1. - rho * rho));
   double needle_factor = 0;
   const double curved_noise = start_curved_filtering(mesh, adjacency, noise, points, needle_factor);
-  const double infinity = std::numeric_limits<double>::infinity();
+  const std::vector<double> isotropic;  // no range weights
   // On a mesh of needles (needle factor 1 or more) the coarse iterations below, with
   // the stop on the whole displacement: on blade at 0.3 noise the small iterations give
   // 11.2 degrees instead of 9.71. Between 0 and 1 the two results are blended.
@@ -384,7 +379,7 @@ inline std::vector<Eigen::Vector3d> filter_normals(const Indexed_mesh& mesh, con
     for(std::size_t it = 0; it < options.iterations && moved < limit; ++it)
     {
       previous = points;
-      iterate(infinity, curved_fit_steps, curved_tangential_weight);
+      iterate(isotropic, curved_fit_steps, curved_tangential_weight);
       const double next = normal_displacement();
       if(next >= limit)
       {
@@ -404,7 +399,7 @@ inline std::vector<Eigen::Vector3d> filter_normals(const Indexed_mesh& mesh, con
     small_steps.swap(points);
     points = start;
   }
-  run_to_limit(infinity, options.displacement_limit * detail_free * curved_noise);
+  run_to_limit(isotropic, options.displacement_limit * detail_free * curved_noise);
   if(!small_steps.empty())
     for(std::size_t i = 0; i < n; ++i)
       points[i] = needle_weight * points[i] + (1. - needle_weight) * small_steps[i];
