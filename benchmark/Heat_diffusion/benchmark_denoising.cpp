@@ -13,9 +13,11 @@
 //    iteration counts;
 //  - optionally (--signature) the paper's pipeline, Denoising_method::signature_diffusion.
 // The benchmark set: CAD meshes with flat parts and creases, CAD meshes with needle
-// triangles (minimum angle under 10 degrees on most faces), organic meshes; Gaussian
-// noise of 0.1, 0.2, 0.3 and 0.5 mean edge length, along the vertex normals and in
-// random directions, with fixed seeds.
+// triangles (minimum angle under 10 degrees on most faces), organic meshes, and CAD
+// exports whose coarse tessellation puts most faces at a crease with all their
+// neighbours (couplingdown, b9_mesh) or makes every face a needle across curved holes
+// (cheese); Gaussian noise of 0.1, 0.2, 0.3 and 0.5 mean edge length, along the vertex
+// normals and in random directions, with fixed seeds.
 //
 // Metrics, for every method: MAD, the mean angle in degrees between corresponding face
 // normals of the result and of the clean mesh (the grids are searched for the lowest
@@ -24,10 +26,12 @@
 // flipped (more than 90 degrees from the clean one); the intersecting face pairs beyond
 // those of the clean mesh; the time of the chosen setting.
 //
-// Usage: benchmark_denoising [--quick] [--signature] [--normal-only] [--noise x]... [mesh ...]
+// Usage: benchmark_denoising [--quick] [--signature] [--normal-only] [--clean] [--noise x]... [mesh ...]
 //   --quick       fandisk, anchor and elephant at noise 0.3 and 0.5 along the normals
 //   --signature   also run the paper's pipeline (slow)
 //   --normal-only only the noise along the normals
+//   --clean       also each clean mesh (noise 0): how far each method moves a mesh that
+//                 has no noise
 //   --noise x     only this noise level (repeatable)
 //   mesh          a file name in CGAL's data set, or a path (default: the whole set)
 
@@ -244,7 +248,8 @@ struct Set_entry
 const std::vector<Set_entry> full_set = {
     {"fandisk.off", "CAD, creases"},      {"anchor_dense.off", "CAD, creases"}, {"turbine.off", "CAD, creases"},
     {"blade.off", "CAD, needles"},        {"anchor.off", "CAD, needles"},       {"rotor_small.off", "CAD, needles"},
-    {"elephant.off", "organic"},          {"armadillo.off", "organic"},         {"bunny00.off", "organic"}};
+    {"elephant.off", "organic"},          {"armadillo.off", "organic"},         {"bunny00.off", "organic"},
+    {"couplingdown.off", "CAD export"},   {"b9_mesh.off", "CAD export"},        {"cheese.off", "CAD export"}};
 
 const std::vector<Set_entry> quick_set = {
     {"fandisk.off", "CAD, creases"}, {"anchor.off", "CAD, needles"}, {"elephant.off", "organic"}};
@@ -253,7 +258,7 @@ const std::vector<Set_entry> quick_set = {
 
 int main(int argc, char** argv)
 {
-  bool quick = false, signature = false, normal_only = false;
+  bool quick = false, signature = false, normal_only = false, clean = false;
   std::vector<double> noises;
   std::vector<Set_entry> set;
   for(int i = 1; i < argc; ++i)
@@ -264,6 +269,8 @@ int main(int argc, char** argv)
       signature = true;
     else if(std::strcmp(argv[i], "--normal-only") == 0)
       normal_only = true;
+    else if(std::strcmp(argv[i], "--clean") == 0)
+      clean = true;
     else if(std::strcmp(argv[i], "--noise") == 0 && i + 1 < argc)
       noises.push_back(std::stod(argv[++i]));
     else if(argv[i][0] == '-')
@@ -280,6 +287,8 @@ int main(int argc, char** argv)
     noises = quick ? std::vector<double>{0.3, 0.5} : std::vector<double>{0.1, 0.2, 0.3, 0.5};
   if(quick)
     normal_only = true;
+  if(clean)
+    noises.insert(noises.begin(), 0.);
 
   const std::vector<std::string> methods = {"denoise_mesh", "GNF", "BNF", "bilateral (tuned)", "Taubin (tuned)",
                                             "smooth_shape (tuned)", "signature diffusion"};
@@ -309,7 +318,7 @@ int main(int argc, char** argv)
     const std::string name = path.substr(path.find_last_of('/') + 1) + " (" +
                              std::to_string(ref.clean.number_of_vertices()) + ")";
     for(double noise : noises)
-      for(int direction = 0; direction < (normal_only ? 1 : 2); ++direction)
+      for(int direction = 0; direction < (normal_only || noise == 0 ? 1 : 2); ++direction)
       {
         Mesh noisy = ref.clean;
         if(direction == 0)
@@ -317,7 +326,7 @@ int main(int argc, char** argv)
         else
           test_support::add_random_direction_noise(noisy, noise, 6);
         const std::string row = "| " + name + " | " + entry.kind + " | " + format(noise) + " | " +
-                                (direction == 0 ? "normal" : "random") + " | ";
+                                (noise == 0 ? "none" : direction == 0 ? "normal" : "random") + " | ";
         std::vector<Score> scores;
         scores.push_back(full_score(ref, noisy, 0, "input"));
         scores.push_back(run_once(ref, noisy, [](Mesh& m) { HD::denoise_mesh(m); }, "defaults"));
@@ -344,7 +353,8 @@ int main(int argc, char** argv)
                     << s.new_intersections << " | " << format(s.seconds, 2) << " | " << s.setting << " |\n";
         }
         if(scores[1].mad > 1.1 * best_baseline)
-          losing_rows.push_back(name + ", noise " + format(noise) + (direction == 0 ? " normal" : " random") +
+          losing_rows.push_back(name + ", noise " + format(noise) +
+                                (noise == 0 ? " (clean)" : direction == 0 ? " normal" : " random") +
                                 ": " + format(scores[1].mad) + " against " + format(best_baseline));
         std::cout << std::flush;
       }

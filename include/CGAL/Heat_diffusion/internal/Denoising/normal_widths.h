@@ -62,9 +62,10 @@ constexpr double shape_smoothing_time = 9.;
 //    (which the smoothing rounds, so that the faces along them keep the widest width).
 // Measured by benchmark_denoising (seeds 5 and 6), against a single width of 0.45: fandisk
 // at 0.1, 0.2 and 0.3 noise, along the normals then in random directions, from 2.16,
-// 2.40, 2.77 and 2.08, 2.29, 3.31 to 1.46, 2.12, 2.68 and 1.48, 1.83, 3.03 degrees;
-// anchor_dense from 3.59, 4.42, 5.19 and 3.48, 4.51, 5.88 to 3.01, 4.28, 5.33 and 2.71, 4.23,
-// 5.74. The factors were chosen on these two meshes.
+// 2.40, 2.77 and 2.08, 2.29, 3.31 to 1.46, 2.06, 2.71 and 1.48, 1.83, 3.02 degrees;
+// anchor_dense from 3.59, 4.42, 5.19 and 3.48, 4.51, 5.88 to 3.03, 4.37, 5.33 and 2.69, 4.19,
+// 5.75. The factors were chosen on these two meshes (noise factors 0.6 to 0.9, bend factors
+// 1 to 2 and smoothing times 4 and 9 measured).
 // `noise` is the noise level of the input (plane_fit_noise_level). If the smoothing
 // fails, the bend is not known and every face gets the widest width.
 inline std::vector<double> crease_preserving_widths(const Indexed_mesh& mesh, const Face_adjacency& adjacency,
