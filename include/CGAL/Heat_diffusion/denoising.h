@@ -92,12 +92,14 @@ enum class Denoising_method
 ///     then a tangential relaxation \f$ v_i \leftarrow v_i + 0.1\,(I - n_i n_i^T)(\bar v_i - v_i) \f$,
 ///     \f$ \bar v_i \f$ the mean of the neighbours), until the root mean square displacement
 ///     from the input along the vertex normals reaches `displacement_limit` \f$ \times\,\hat\varepsilon_2 \f$,
-///     the last iteration cut back to reach it exactly. \f$ \hat\varepsilon_2 \f$ is the noise
+///     the last iteration cut back to reach it exactly. \f$ \hat\varepsilon_2 = \sqrt{e_2(p)^2 - e_2(q)^2} \f$,
+///     p the input and q the result of 3, where \f$ e_2 \f$ is the noise
 ///     level of second differences: the median over the vertices of the distance along the
 ///     normal of \f$ ((I - W)^2 p)_i \f$ from 0 (W the mean over the one-ring) divided by
 ///     \f$ 0.6745 \f$ and by the norm of row i of \f$ (I - W)^2 \f$; the curvature of a smooth
-///     shape, which the estimate of 1 counts as noise, cancels in it to first order.
-///     Then, where \f$ \hat\varepsilon_2 \f$ is above 0.12 mean edge lengths, up to 30 more
+///     shape, which the estimate of 1 counts as noise, cancels in it to first order, and
+///     the detail that it still counts, kept by 3, is subtracted (noise and detail add in
+///     quadrature). Then, where \f$ \hat\varepsilon_2 \f$ is above 0.12 mean edge lengths, up to 30 more
 ///     tangential relaxations (their number ramps from 0 to 30 between 0.12 and 0.17 mean
 ///     edge lengths): noise in random directions moves the vertices within the surface too;
 ///  6. on a curved mesh of needle triangles this isotropic filtering starts from a
@@ -123,7 +125,11 @@ enum class Denoising_method
 ///     \f$ \sqrt{1 - \rho^2}\,(\hat\varepsilon + \nu(\hat\varepsilon' - \hat\varepsilon)) \f$, both from the fit.
 ///     Meshes of reasonable triangles (\f$ a \geq 0.5 \f$) are filtered as in 5.
 /// A `normal_sigma` given by the user replaces 3 to 6 by iterations with that width until
-/// the displacement of 3. A mesh whose noise level is 0 is left unchanged.
+/// the displacement of 3. A mesh whose noise level is 0 is left unchanged, and so is a
+/// mesh whose result of 3, measured as in 1, is as rough as the input (noise and the
+/// shape's detail add in quadrature: the estimate of 1 then measured the shape alone,
+/// as on clean CAD meshes where it reads rounding errors or the facets of a coarse
+/// tessellation).
 ///
 /// <b>`Denoising_method::signature_diffusion`: the paper's pipeline.</b> Each of the
 /// `number_of_iterations` iterations
