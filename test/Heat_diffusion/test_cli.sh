@@ -145,12 +145,32 @@ cp "$data/elephant.off" mine2.off
 expect 1 'refusing to overwrite the input' -- "$tool" enhance mine2.off -o mine2.off
 cmp -s mine2.off "$data/elephant.off" && pass || fail "enhance modified its input"
 expect 0 'Usage: heat_diffusion enhance' -- "$tool" enhance --help
-# denoise: OFF and PLY outputs with the input's vertex count, JSON with timings, errors
-"$tool" denoise "$data/elephant.off" -o denoised.off --json --quiet > denoise.json &&
+# denoise: OFF and PLY outputs with the input's vertex count, JSON with timings, errors;
+# a noisy elephant (Gaussian noise of 0.1 mean edge length on each coordinate) is
+# denoised, the clean one is left as it is
+python3 - "$data/elephant.off" noisy_elephant.off <<'PYTHON'
+import math, random, sys
+tokens = open(sys.argv[1]).read().split()
+nv, nf = int(tokens[1]), int(tokens[2])
+points = [[float(x) for x in tokens[4 + 3 * i:7 + 3 * i]] for i in range(nv)]
+faces = [[int(x) for x in tokens[4 + 3 * nv + 4 * f + 1:4 + 3 * nv + 4 * f + 4]] for f in range(nf)]
+edges = [math.dist(points[f[k]], points[f[(k + 1) % 3]]) for f in faces for k in range(3)]
+sigma = 0.1 * sum(edges) / len(edges)
+random.seed(5)
+with open(sys.argv[2], "w") as out:
+    out.write("OFF\n%d %d 0\n" % (nv, nf))
+    for p in points:
+        out.write("%r %r %r\n" % tuple(x + random.gauss(0, sigma) for x in p))
+    for f in faces:
+        out.write("3 %d %d %d\n" % tuple(f))
+PYTHON
+"$tool" denoise noisy_elephant.off -o denoised.off --json --quiet > denoise.json &&
+  "$tool" denoise "$data/elephant.off" -o clean_denoised.off --json --quiet > clean_denoise.json &&
   python3 -c '
-import json; d = json.load(open("denoise.json"))
+import json; d = json.load(open("denoise.json")); c = json.load(open("clean_denoise.json"))
 assert d["vertices"] == 2775 and d["method"] == "normal_filtering" and d["max_iterations"] == 100, d
 assert 0 < d["displacement_in_mean_edge_lengths"]["mean"] < 1, d
+assert c["displacement_in_mean_edge_lengths"]["max"] < 1e-9, c
 assert all(v >= 0 for v in d["timings_ms"].values()) and "denoise" in d["timings_ms"], d' &&
   [ "$(sed -n 2p denoised.off | cut -d" " -f1)" = 2775 ] && pass || fail "denoise OFF output or JSON"
 expect 0 'written to denoised.ply' -- "$tool" denoise "$data/elephant.off" -o denoised.ply --method signature_diffusion --iterations 1 -m 60
