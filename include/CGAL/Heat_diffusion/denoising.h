@@ -124,6 +124,13 @@ enum class Denoising_method
 ///     \f$ 1 - \nu \f$ and \f$ \nu \f$, of that of 5 and that of these iterations stopped at
 ///     \f$ \sqrt{1 - \rho^2}\,(\hat\varepsilon + \nu(\hat\varepsilon' - \hat\varepsilon)) \f$, both from the fit.
 ///     Meshes of reasonable triangles (\f$ a \geq 0.5 \f$) are filtered as in 5.
+/// Steps 3 and 4, and in 6 the fit and the iterations of 2 from it, stop short of shrinking the shape:
+/// removing noise moves the vertices both ways along the normals, eroding thin parts
+/// moves them one way, so that each of these phases ends at the iterate before the one
+/// whose mean displacement from the input along the input's vertex normals (weighted by
+/// area) exceeds both 0.1 \f$ \hat\varepsilon \f$ and a quarter of the root mean square
+/// displacement (the small iterations of 5 are bounded by their own stop), and the fit of 6
+/// is scaled back to that bound.
 /// A `normal_sigma` given by the user replaces 3 to 6 by iterations with that width until
 /// the displacement of 3. A mesh whose noise level is 0 is left unchanged, and so is a
 /// mesh whose result of 3, measured as in 1, is as rough as the input (noise and the
