@@ -46,8 +46,11 @@ inline std::string denoise_help()
          "\n"
          "Denoises a triangle mesh, keeping its connectivity (CGAL::Heat_diffusion::denoise_mesh).\n"
          "normal_filtering (default): the face normals are diffused with the edge weights of the\n"
-         "paper's eq. 10 (normals in place of the NCC) and the vertices moved to fit them, until\n"
-         "the vertices have moved by the noise level estimated from the Normal Signature.\n"
+         "paper's eq. 10 (normals in place of the NCC, a width per face adapted to the noise) and\n"
+         "the vertices moved to fit them, until the vertices have moved by the estimated noise\n"
+         "level; curved surfaces are then filtered without the weights, up to their noise level.\n"
+         "It stops where its displacement turns one-way (the shape shrinking), and returns a mesh\n"
+         "whose roughness is all shape (a clean mesh, mostly) unchanged.\n"
          "signature_diffusion: the paper's pipeline (eq. 22-23): each iteration diffuses the Normal\n"
          "Signature with the edge-weighted heat kernel, updates the normals and reconstructs the\n"
          "vertices from the diffused signature in the least-squares sense.\n"
@@ -57,8 +60,9 @@ inline std::string denoise_help()
          help_option("--iterations N", "at most N iterations, each on the previous result, 0 to 10000 (default 100 "
                                        "for normal filtering, where the displacement limit usually stops it "
                                        "earlier; 2 for signature diffusion)") +
-         help_option("--normal-sigma S", "normal filtering: width of the normal weights exp(-|n_f-n_g|^2/2S^2) "
-                                         "(default: from the estimated noise, max(0.4, 1.6 noise / mean edge))") +
+         help_option("--normal-sigma S", "normal filtering: one width of the normal weights exp(-|n_f-n_g|^2/2S^2) "
+                                         "for every face and iteration, until the displacement limit (default: "
+                                         "a width per face from 0.2 to 0.45, then none on curved surfaces)") +
          help_option("--displacement-limit D", "normal filtering: stop when the RMS vertex displacement reaches D "
                                                "times the estimated noise level (default 1.1)") +
          diffusion_options_help(denoise_spec()) +
