@@ -337,12 +337,13 @@ inline std::vector<Eigen::Vector3d> filter_normals(const Indexed_mesh& mesh, con
       squares += (points[i] - before[i]).squaredNorm();
     return std::sqrt(squares / double(n));
   };
-  // Whether the points are shrinking the shape (see shrinkage_bound).
+  // The magnitude of the mean displacement of the points along the input's normals if
+  // they are shrinking the shape (see shrinkage_bound), else 0.
   std::vector<Eigen::Vector3d> input_normals;
   area_weighted_normals(mesh, adjacency, mesh.points, input_normals);
-  auto shrunk = [&]() {
+  auto shrinkage = [&]() {
     const double mean = std::abs(mean_normal_displacement(mesh.points, points, input_normals));
-    return mean > shrinkage_bound * noise && mean >= systematic_fraction * displacement();
+    return mean > shrinkage_bound * noise && mean >= systematic_fraction * displacement() ? mean : 0.;
   };
   std::vector<Eigen::Vector3d> previous;
   // One iteration, undone if it shrinks the shape: then returns false. `move` receives
@@ -350,7 +351,7 @@ inline std::vector<Eigen::Vector3d> filter_normals(const Indexed_mesh& mesh, con
   auto iterate_unless_shrinking = [&](const std::vector<double>& widths, double& move) {
     previous = points;
     move = iterate(widths);
-    if(!shrunk())
+    if(shrinkage() == 0)
       return true;
     points.swap(previous);
     return false;
@@ -421,15 +422,9 @@ inline std::vector<Eigen::Vector3d> filter_normals(const Indexed_mesh& mesh, con
   // The fit of a mesh of needles to a smoothed copy shrinks the shape too: it is scaled
   // back where it does (see shrinkage_bound). The mean displacement is linear in the
   // scale, and its fraction of the root mean square displacement does not depend on it.
-  {
-    const double mean = std::abs(mean_normal_displacement(mesh.points, points, input_normals));
-    if(mean > shrinkage_bound * noise && mean >= systematic_fraction * displacement())
-    {
-      const double scale = shrinkage_bound * noise / mean;
-      for(std::size_t i = 0; i < n; ++i)
-        points[i] = mesh.points[i] + scale * (points[i] - mesh.points[i]);
-    }
-  }
+  if(const double mean = shrinkage(); mean > 0)
+    for(std::size_t i = 0; i < n; ++i)
+      points[i] = mesh.points[i] + (shrinkage_bound * noise / mean) * (points[i] - mesh.points[i]);
   const std::vector<double> isotropic;  // no range weights
   // On a mesh of needles (needle factor 1 or more) the coarse iterations below, with
   // the stop on the whole displacement: on blade at 0.3 noise the small iterations give
