@@ -107,7 +107,10 @@ double best_bilateral(const Mesh& clean, const Mesh& noisy, std::string& best)
 // but against the bilateral filter on elephant at 0.1, which checks the bound only.
 // The needle-triangle CAD meshes: blade (median face aspect 0.08, every face a needle;
 // open) and rotor_small (a third of the faces with a smallest angle under 10 degrees;
-// closed, but the noise alone changes its volume by 3 %, so the volume is not checked).
+// closed, but the noise alone changes its volume by 3 %, which the result keeps, so the
+// volume is not checked); a CAD export of needles and creases, couplingdown at 0.1, where
+// the filter once made the noisy mesh worse (33.9 degrees against the input's 25.3) and
+// shrank it by 3 %.
 struct Quality_case
 {
   const char* file;
@@ -127,8 +130,9 @@ void test_quality()
 {
   const Quality_case cases[] = {{"fandisk.off", 0.3, 3.2, true, true, true},
                                 {"fandisk.off", 0.5, 5.2, true, true, true},
-                                {"blade.off", 0.3, 11.2, true, true, false},
-                                {"rotor_small.off", 0.3, 30., true, true, false},
+                                {"blade.off", 0.3, 7.7, true, true, false},
+                                {"rotor_small.off", 0.3, 20., true, true, false},
+                                {"couplingdown.off", 0.1, 19.8, true, true, true},
                                 {"elephant.off", 0.1, 7.5, true, false, true}};
   for(const Quality_case& c : cases)
   {
@@ -280,15 +284,19 @@ void test_clean_meshes()
 // (cheese) used to collapse: the filters moved every vertex inward (anchor, clean: 49
 // degrees of MAD and -38 % of volume; cheese with 0.1 mean edge length of noise: 69.8
 // degrees and -90 %, worse than the noisy input's 30.5). The filters now stop before
-// their mean displacement along the normals turns one-way.
+// their mean displacement along the normals turns one-way, and the smoothed copy of a
+// mesh of needles is taken at a time short enough not to shrink it, rescaled to the
+// input's volume: anchor 2.29 degrees and 0.0 %, cheese 16.9 and +0.6 % (with the
+// shrinkage stop alone 7.09 and -8.7 %, 27.4 and -11 %). Bounds: those plus about 15 %.
 void test_no_collapse()
 {
   struct Case
   {
     const char* file;
     double noise;
+    double bound;
   };
-  for(const Case c : {Case{"anchor.off", 0.}, Case{"cheese.off", 0.1}})
+  for(const Case c : {Case{"anchor.off", 0., 2.7}, Case{"cheese.off", 0.1, 19.5}})
   {
     const Mesh clean = test_support::load<Mesh>(c.file);
     Mesh noisy = clean;
@@ -300,8 +308,10 @@ void test_no_collapse()
     const double change = PMP::volume(denoised) / PMP::volume(clean) - 1;
     std::cout << c.file << ", noise " << c.noise << ": MAD " << noisy_mad << " -> " << mad << ", volume change "
               << change << std::endl;
-    CHECK_MESSAGE(std::abs(change) < 0.12, c.file << ": volume change " << change);
-    CHECK_MESSAGE(mad < (c.noise > 0 ? noisy_mad : 10.), c.file << ": MAD " << mad);
+    CHECK_MESSAGE(std::abs(change) < 0.01, c.file << ": volume change " << change);
+    CHECK_MESSAGE(mad < c.bound, c.file << ": MAD " << mad);
+    if(c.noise > 0)
+      CHECK_MESSAGE(mad < noisy_mad, c.file << ": MAD " << mad << " against the noisy input's " << noisy_mad);
   }
 }
 
@@ -379,8 +389,8 @@ void test_kernels_and_mesh_types()
 
 // NCC, the rescaled kernel and the area-normalised anchors are dimensionless: the
 // result of a scaled mesh is the scaled result.
-// rotor_small, a mesh of needles, takes the path of the smoothed start and the
-// least-squares fit (normal filtering only).
+// rotor_small, a mesh of needles, takes the path of the smoothed copy and its volume
+// rescaling (normal filtering only).
 void test_scale_invariance()
 {
   for(const char* file : {"elephant.off", "rotor_small.off"})
@@ -415,11 +425,12 @@ void test_scale_invariance()
 
 // The noise estimate, the weights and the stop rules use no direction and no absolute
 // length: a rotated and translated mesh gives the rotated and translated result.
-// fandisk takes the crease-preserving path, rotor_small (needles) the smoothed start
-// and the least-squares fit.
+// fandisk takes the crease-preserving path, rotor_small (needles) the smoothed copy and
+// its volume rescaling, anchor (needles, whose thin parts the smoothed copy erodes) the
+// copy at a halved time.
 void test_rigid_motion_invariance()
 {
-  for(const char* file : {"fandisk.off", "rotor_small.off"})
+  for(const char* file : {"fandisk.off", "rotor_small.off", "anchor.off"})
   {
     Mesh mesh = test_support::load<Mesh>(file);
     test_support::add_normal_noise(mesh, 0.3, 13);

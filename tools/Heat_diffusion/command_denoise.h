@@ -49,6 +49,8 @@ inline std::string denoise_help()
          "paper's eq. 10 (normals in place of the NCC, a width per face adapted to the noise) and\n"
          "the vertices moved to fit them, until the vertices have moved by the estimated noise\n"
          "level; curved surfaces are then filtered without the weights, up to their noise level.\n"
+         "On curved meshes of needle triangles the result is the input smoothed by the cotangent\n"
+         "mean curvature flow for a time set by the noise, rescaled to the input's volume.\n"
          "It stops where its displacement turns one-way (the shape shrinking), and returns a mesh\n"
          "whose roughness is all shape (a clean mesh, mostly) unchanged.\n"
          "signature_diffusion: the paper's pipeline (eq. 22-23): each iteration diffuses the Normal\n"

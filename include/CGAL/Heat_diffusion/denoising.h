@@ -102,21 +102,28 @@ enum class Denoising_method
 ///     quadrature). Then, where \f$ \hat\varepsilon_2 \f$ is above 0.12 mean edge lengths, up to 30 more
 ///     tangential relaxations (their number ramps from 0 to 30 between 0.12 and 0.17 mean
 ///     edge lengths): noise in random directions moves the vertices within the surface too;
-///  6. on a curved mesh of needle triangles this isotropic filtering starts from a
-///     smoothed fit instead of the input. A face's normal moves by about the noise over
-///     its smallest altitude, so that on needles the normals are mostly noise, which
-///     filtering normals cannot average out, and the noise level of 1, measured along
-///     normals that tilt with the noise of thin fans, is about half the true one. Let
+///  6. on a curved mesh of needle triangles the result is a smoothed copy of the input, or
+///     this isotropic filtering starts from a smoothed fit instead of the input. A face's
+///     normal moves by about the noise over its smallest altitude, so that on needles the
+///     normals are mostly noise, which filtering normals cannot average out, and the noise
+///     level of 1, measured along normals that tilt with the noise of thin fans, is about
+///     half the true one. Let
 ///     \f$ P \f$ be the input smoothed by one implicit step of the cotangent mean curvature
 ///     flow (\f$ (M + tL)x = Mp \f$) of time \f$ t = \bar e^2 \f$ (\f$ \bar e \f$ the mean edge length),
 ///     \f$ a \f$ the median over the faces of \f$ P \f$ of 2 area / (longest edge)\f$^2 \f$ (0.87 for
-///     an equilateral triangle) and \f$ \nu = \max(0, (0.5/a)^2 - 1) \f$. If \f$ \nu > 0 \f$, the
-///     vertices are fitted in one sparse least-squares solve,
+///     an equilateral triangle) and \f$ \nu = \max(0, (0.5/a)^2 - 1) \f$. If \f$ \nu > 0 \f$, let
+///     \f$ S \f$ be the input smoothed by the same flow for the time \f$ 2 \nu \hat\varepsilon'^2 \f$
+///     (the cotangent operator does not depend on the shape of the triangles), where
+///     \f$ \hat\varepsilon' \f$ is the noise level of 1 measured along the normals of \f$ P \f$.
+///     For \f$ \nu \geq 2 \f$ the result is \f$ S \f$ with each closed component scaled about
+///     its centroid to the volume it encloses in the input (mean curvature flow shrinks a
+///     closed surface; the volume rescaling of Desbrun et al. 1999); for \f$ 1 \leq \nu < 2 \f$
+///     it is the blend, with weights \f$ \nu - 1 \f$ and \f$ 2 - \nu \f$, of that and of the
+///     filtering that follows. Where \f$ S \f$ shrinks the shape (see below), its time is
+///     halved until it does not, at most 12 times, and if it still does, that filtering is
+///     the result alone. It fits the vertices in one sparse least-squares solve,
 ///     \f$ \min_x \sum_f a_f \sum_{ij \in f} (n_f \cdot (x_j - x_i))^2 + 0.01 \sum_i m_i |x_i - v_i|^2 \f$,
-///     to the face normals \f$ n_f \f$ of the input smoothed by the same flow for the time
-///     \f$ 2 \nu \hat\varepsilon'^2 \f$ (the cotangent operator does not depend on the shape of
-///     the triangles), where \f$ \hat\varepsilon' \f$ is the noise level of 1 measured along the
-///     normals of \f$ P \f$; for \f$ \nu \geq 1 \f$ the isotropic filtering then runs from the fit
+///     to the face normals \f$ n_f \f$ of \f$ S \f$; for \f$ \nu \geq 1 \f$ the isotropic filtering then runs from the fit
 ///     in iterations of 2 until the root mean square displacement from the input reaches
 ///     `displacement_limit` times \f$ \sqrt{1 - \rho^2}\,\hat\varepsilon' \f$, where
 ///     \f$ \rho\,\hat\varepsilon \f$ is the noise level of the result of 3 measured as in 1 (the
@@ -130,7 +137,9 @@ enum class Denoising_method
 /// whose mean displacement from the input along the input's vertex normals (weighted by
 /// area) exceeds both 0.1 \f$ \hat\varepsilon \f$ and a quarter of the root mean square
 /// displacement (the small iterations of 5 are bounded by their own stop), and the fit of 6
-/// is scaled back to that bound.
+/// is scaled back to that bound. A smoothed copy \f$ S \f$ whose displacement exceeds both
+/// is not used (meshes whose parts are a few faces thick, or whose needles span holes,
+/// where the noise level of 1 also counts the shape).
 /// A `normal_sigma` given by the user replaces 3 to 6 by iterations with that width until
 /// the displacement of 3. A mesh whose noise level is 0 is left unchanged, and so is a
 /// mesh whose result of 3, measured as in 1, is as rough as the input (noise and the
@@ -258,7 +267,7 @@ enum class Denoising_method
 /// with TBB), at most `number_of_iterations` iterations plus those of the isotropic
 /// filtering on curved surfaces; on curved surfaces one sparse Cholesky factorisation of
 /// n unknowns (the smoothed copy \f$ P \f$), and on curved meshes of needles one more of n
-/// and a conjugate gradient solve of 3n unknowns (see `benchmark_denoising` for times
+/// (\f$ S \f$), and where \f$ S \f$ is not the result alone a conjugate gradient solve of 3n unknowns (see `benchmark_denoising` for times
 /// measured against the published filters).
 /// Signature diffusion: per iteration, one edge-weighted heat kernel (a sparse Cholesky
 /// factorisation and a Lanczos iteration of \f$ O(n m^2) \f$ dense work: most of the time),
