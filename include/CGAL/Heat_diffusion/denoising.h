@@ -140,6 +140,12 @@ enum class Denoising_method
 /// is scaled back to that bound. A smoothed copy \f$ S \f$ whose displacement exceeds both
 /// is not used (meshes whose parts are a few faces thick, or whose needles span holes,
 /// where the noise level of 1 also counts the shape).
+/// Where the result of the filter (4, 5, or 6 without \f$ S \f$) changes the volume of a closed
+/// component by more than 1 %, the filter has eroded the shape (the rims of thin walls,
+/// strips one face wide between creases): the result is then the input smoothed by the
+/// same flow for the time \f$ 32 \hat\varepsilon^2 \f$, rescaled as in 6, its time halved as
+/// there while it shrinks the shape. Not with a `displacement_limit` above 1.1, which asks
+/// for the displacement.
 /// A `normal_sigma` given by the user replaces 3 to 6 by iterations with that width until
 /// the displacement of 3. A mesh whose noise level is 0 is left unchanged, and so is a
 /// mesh whose result of 3, measured as in 1, is as rough as the input (noise and the

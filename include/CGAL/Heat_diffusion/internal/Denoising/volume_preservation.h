@@ -13,6 +13,7 @@
 #include <Eigen/Core>
 #include <Eigen/Geometry>
 
+#include <algorithm>
 #include <cmath>
 #include <cstddef>
 #include <numeric>
@@ -41,49 +42,81 @@ inline std::vector<std::size_t> vertex_components(const Indexed_mesh& mesh)
   return parent;
 }
 
-// Scales every closed component of `points` (every vertex of it has a closed fan) about
-// its centroid so that it encloses the volume that it encloses in `reference`. Mean
-// curvature flow shrinks a closed surface (a sphere of radius r by 2t/r in time t); the
-// scaling undoes the shrinkage on average and changes no face normal. Components whose
-// two volumes are not both non-zero, finite and of the same sign are left as they are.
+// The volumes enclosed by the closed components (every vertex has a closed fan) of
+// `reference` and of `points`, and the centroids of the latter's solids, per component
+// (indexed by the component's label, see vertex_components()).
+struct Component_volumes
+{
+  std::vector<std::size_t> component;
+  std::vector<unsigned char> closed;
+  std::vector<double> reference_volume, volume;
+  std::vector<Eigen::Vector3d> centroid;
+
+  // The ratio of the two volumes of the component labelled c, or 0 if it is not closed
+  // or if they are not both non-zero, finite and of the same sign.
+  double ratio(std::size_t c) const
+  {
+    const double r = closed[c] && volume[c] != 0 ? reference_volume[c] / volume[c] : 0.;
+    return r > 0 && std::isfinite(r) && std::isfinite(centroid[c].squaredNorm()) ? r : 0.;
+  }
+};
+
+inline Component_volumes component_volumes(const Indexed_mesh& mesh, const std::vector<Eigen::Vector3d>& reference,
+                                           const std::vector<Eigen::Vector3d>& points)
+{
+  const std::size_t n = points.size();
+  Component_volumes result;
+  result.component = vertex_components(mesh);
+  result.closed.assign(n, 1);
+  for(std::size_t v = 0; v < n; ++v)
+    if(!mesh.fan_is_closed[v] || mesh.degree(v) == 0)
+      result.closed[result.component[v]] = 0;
+  // Six times the signed volumes, and six times the first moments of `points`' solids
+  // (the sum over the tetrahedra (0, a, b, c) of their volume times their centroid).
+  result.reference_volume.assign(n, 0.);
+  result.volume.assign(n, 0.);
+  result.centroid.assign(n, Eigen::Vector3d::Zero());
+  for(const auto& t : mesh.triangles)
+  {
+    const std::size_t c = result.component[t[0]];
+    result.reference_volume[c] += reference[t[0]].dot(reference[t[1]].cross(reference[t[2]]));
+    const double v = points[t[0]].dot(points[t[1]].cross(points[t[2]]));
+    result.volume[c] += v;
+    result.centroid[c] += v * (points[t[0]] + points[t[1]] + points[t[2]]) / 4.;
+  }
+  for(std::size_t c = 0; c < n; ++c)
+    if(result.volume[c] != 0)
+      result.centroid[c] /= result.volume[c];
+  return result;
+}
+
+// The largest relative change of volume from `reference` to `points` over the closed
+// components (0 if there is none).
+inline double largest_volume_change(const Indexed_mesh& mesh, const std::vector<Eigen::Vector3d>& reference,
+                                    const std::vector<Eigen::Vector3d>& points)
+{
+  const Component_volumes volumes = component_volumes(mesh, reference, points);
+  double change = 0;
+  for(std::size_t c = 0; c < points.size(); ++c)
+    if(volumes.component[c] == c && volumes.ratio(c) > 0)
+      change = (std::max)(change, std::abs(1. / volumes.ratio(c) - 1.));
+  return change;
+}
+
+// Scales every closed component of `points` about its centroid so that it encloses the
+// volume that it encloses in `reference`. Mean curvature flow shrinks a closed surface (a
+// sphere of radius r by 2t/r in time t); the scaling undoes the shrinkage on average and
+// changes no face normal. Components whose two volumes are not both non-zero, finite and
+// of the same sign are left as they are.
 inline void restore_component_volumes(const Indexed_mesh& mesh, const std::vector<Eigen::Vector3d>& reference,
                                       std::vector<Eigen::Vector3d>& points)
 {
-  const std::size_t n = points.size();
-  const std::vector<std::size_t> component = vertex_components(mesh);
-  std::vector<unsigned char> closed(n, 1);
-  for(std::size_t v = 0; v < n; ++v)
-    if(!mesh.fan_is_closed[v] || mesh.degree(v) == 0)
-      closed[component[v]] = 0;
-  // Six times the signed volumes, and six times the first moments of `points`' solids
-  // (the sum over the tetrahedra (0, a, b, c) of their volume times their centroid).
-  std::vector<double> reference_volume(n, 0.), volume(n, 0.);
-  std::vector<Eigen::Vector3d> moment(n, Eigen::Vector3d::Zero());
-  for(const auto& t : mesh.triangles)
+  const Component_volumes volumes = component_volumes(mesh, reference, points);
+  for(std::size_t v = 0; v < points.size(); ++v)
   {
-    const std::size_t c = component[t[0]];
-    reference_volume[c] += reference[t[0]].dot(reference[t[1]].cross(reference[t[2]]));
-    const double v = points[t[0]].dot(points[t[1]].cross(points[t[2]]));
-    volume[c] += v;
-    moment[c] += v * (points[t[0]] + points[t[1]] + points[t[2]]) / 4.;
-  }
-  std::vector<double> scale(n, 1.);
-  for(std::size_t c = 0; c < n; ++c)
-  {
-    if(component[c] != c || !closed[c])
-      continue;
-    const double ratio = reference_volume[c] / volume[c];
-    if(ratio > 0 && std::isfinite(ratio) && std::isfinite(moment[c].squaredNorm()))
-      scale[c] = std::cbrt(ratio);
-  }
-  for(std::size_t v = 0; v < n; ++v)
-  {
-    const std::size_t c = component[v];
-    if(scale[c] != 1.)
-    {
-      const Eigen::Vector3d center = moment[c] / volume[c];
-      points[v] = center + scale[c] * (points[v] - center);
-    }
+    const std::size_t c = volumes.component[v];
+    if(const double ratio = volumes.ratio(c); ratio > 0)
+      points[v] = volumes.centroid[c] + std::cbrt(ratio) * (points[v] - volumes.centroid[c]);
   }
 }
 
