@@ -271,10 +271,11 @@ enum class Denoising_method
 ///
 /// Complexity: normal filtering: linear in the size of `tm` per iteration (parallel
 /// with TBB), at most `number_of_iterations` iterations plus those of the isotropic
-/// filtering on curved surfaces; on curved surfaces one sparse Cholesky factorisation of
-/// n unknowns (the smoothed copy \f$ P \f$), and on curved meshes of needles one more of n
-/// (\f$ S \f$), and where \f$ S \f$ is not the result alone a conjugate gradient solve of 3n unknowns (see `benchmark_denoising` for times
-/// measured against the published filters).
+/// filtering on curved surfaces; two sparse Cholesky factorisations of n unknowns (the
+/// smoothing of the widths of 3 and the smoothed copy \f$ P \f$), on meshes of needles one
+/// more (\f$ S \f$), up to 12 more where the time of \f$ S \f$ or of the flow of thin walls is
+/// halved, and where \f$ S \f$ is not the result alone a conjugate gradient solve of 3n
+/// unknowns (see `benchmark_denoising` for times measured against the published filters).
 /// Signature diffusion: per iteration, one edge-weighted heat kernel (a sparse Cholesky
 /// factorisation and a Lanczos iteration of \f$ O(n m^2) \f$ dense work: most of the time),
 /// the operator \f$ A_t \f$ (linear in n), k sparse products and one sparse Cholesky
