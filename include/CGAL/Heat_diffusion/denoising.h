@@ -112,7 +112,9 @@ enum class Denoising_method
 ///     flow (\f$ (M + tL)x = Mp \f$) of time \f$ t = \bar e^2 \f$ (\f$ \bar e \f$ the mean edge length),
 ///     \f$ a \f$ the median over the faces of \f$ P \f$ of 2 area / (longest edge)\f$^2 \f$ (0.87 for
 ///     an equilateral triangle) and \f$ \nu = \max(0, (0.5/a)^2 - 1) \f$. If \f$ \nu > 0 \f$, let
-///     \f$ S \f$ be the input smoothed by the same flow for the time \f$ 2 \nu \hat\varepsilon'^2 \f$
+///     \f$ S \f$ be the input smoothed by the same flow for the time \f$ 2 \nu \hat\varepsilon'^2 \f$,
+///     in 8 implicit steps of an eighth of it (the same smoothing of the shape, a far
+///     stronger one of the noise's high frequencies)
 ///     (the cotangent operator does not depend on the shape of the triangles), where
 ///     \f$ \hat\varepsilon' \f$ is the noise level of 1 measured along the normals of \f$ P \f$.
 ///     For \f$ \nu \geq 2 \f$ the result is \f$ S \f$ with each closed component scaled about

@@ -167,15 +167,16 @@ constexpr double systematic_fraction = 0.25;
 // The smoothed copy of a mesh of needles (smooth_needle_mesh()) erodes meshes whose parts
 // are a few faces thick or whose needles span curved holes, where the noise estimate also
 // counts the shape (CGAL's anchor and cheese: eps' reads 0.36 to 0.61 mean edge length
-// whatever the noise, and the copy has a mean displacement of 0.32 to 0.59 of its root
-// mean square displacement and -57 to -93 % of volume, where removing the noise of
-// rotor_small and couplingdown gives 0.10 to 0.22). Its time is then halved, up to this
-// many times, until the copy no longer shrinks the shape: 3 to 7 halvings there. Measured
+// whatever the noise, and the copy, in one implicit step, has a mean displacement of 0.32
+// to 0.59 of its root mean square displacement and -57 to -93 % of volume, where removing
+// the noise of rotor_small and couplingdown gives 0.10 to 0.22). Its time is then halved,
+// up to this many times, until the copy no longer shrinks the shape (3 to 7 halvings
+// there, with one step). Measured
 // with the benchmark's seeds, clean and at 0.1, 0.3, 0.5 noise along the normals, then in
-// random directions: anchor 2.29, 20.0, 48.1, 55.9 and 20.8, 56.7, 58.8 degrees (before,
-// with the filter alone: 7.09, 32.6, 55.8, 66.5 and 39.3, 55.2, 64.6, at -4 to -32 % of
-// volume); cheese 3.52, 16.9, 43.4, 55.9 and 15.5, 44.2, 60.1 (13.9, 27.4, 51.3, 63.3 and
-// 29.8, 58.6, 69.6, at -9 to -15 %).
+// random directions (in flow_substeps steps): anchor 2.60, 19.8, 46.0, 49.4 and 19.1,
+// 47.0, 53.1 degrees (before, with the filter alone: 7.09, 32.6, 55.8, 66.5 and 39.3,
+// 55.2, 64.6, at -4 to -32 % of volume); cheese 4.29, 15.4, 41.0, 54.2 and 14.6, 40.0,
+// 56.6 (13.9, 27.4, 51.3, 63.3 and 29.8, 58.6, 69.6, at -9 to -15 %).
 constexpr int needle_time_halvings = 12;
 
 // Thin walls. A normal filter whose result changes the volume of a closed component by
@@ -187,10 +188,11 @@ constexpr int needle_time_halvings = 12;
 // input smoothed by the cotangent flow for the time eroded_filter_flow_time eps^2 (eps
 // the noise level, plane_fit_noise_level), rescaled to the input's volume, its time
 // halved as that of needle meshes while it shrinks the shape. Measured on turbine with
-// the benchmark's seeds at 0.1, 0.3, 0.5: 6.90, 13.3, 18.8 degrees at -0.02 to -0.13 %
-// of volume (the time halved once, twice, twice), against 10.5, 15.2, 20.9 for the
-// filter; without the halvings 6.20, 9.99, 13.2, with 8 eps^2 8.43, 13.3, 18.8, with
-// 64 eps^2 6.54, 11.4, 14.9. (The flow would round the creases of the meshes that the
+// the benchmark's seeds at 0.1, 0.3, 0.5: 5.66, 8.95, 11.7 degrees at -0.02 to -0.13 %
+// of volume, against 10.5, 15.2, 20.9 for the filter. (Chosen with one implicit step
+// instead of flow_substeps: 6.90, 13.3, 18.8, the time halved once, twice, twice; without
+// the halvings 6.20, 9.99, 13.2; with 8 eps^2 8.43, 13.3, 18.8, with 64 eps^2 6.54, 11.4,
+// 14.9.) (The flow would round the creases of the meshes that the
 // filter does not erode: fandisk at 0.3 noise 13.4 degrees against 2.71.) Not applied to
 // the filter's part of a blend with the smoothed copy of a needle mesh (couplingdown at
 // 0.3 and 0.5 noise: 27.3 and 38.0 degrees with it, 26.2 and 32.8 without).
@@ -358,7 +360,8 @@ inline std::vector<Eigen::Vector3d> filter_normals(const Indexed_mesh& mesh, con
       points = *smoothed;
     bool kept = smoothed != nullptr && shrinkage() == 0;
     for(int halving = smoothed != nullptr ? 1 : 0; !kept && halving <= needle_time_halvings; ++halving)
-      kept = implicit_smoothing(mesh, mesh.points, std::ldexp(time, -halving), points) && shrinkage() == 0;
+      kept = implicit_smoothing(mesh, mesh.points, std::ldexp(time, -halving), points, flow_substeps) &&
+             shrinkage() == 0;
     if(!kept)
     {
       points = mesh.points;
