@@ -14,6 +14,7 @@
 #include <CGAL/Heat_diffusion/internal/Denoising/needle_surface_fit.h>
 #include <CGAL/Heat_diffusion/internal/Denoising/noise_level.h>
 #include <CGAL/Heat_diffusion/internal/Denoising/normal_widths.h>
+#include <CGAL/Heat_diffusion/internal/Denoising/shrinkage_stop.h>
 #include <CGAL/Heat_diffusion/internal/Denoising/volume_preservation.h>
 #include <CGAL/Heat_diffusion/internal/Indexed_mesh.h>
 #include <CGAL/Heat_diffusion/internal/parallel_for.h>
@@ -142,82 +143,6 @@ struct Normal_filtering_options
 // filter would only turn into false creases. The test is close on some meshes (see the
 // user manual: elephant at 0.5 noise, ALSTOM_TEST4 at 0.3).
 constexpr double piecewise_flat_roughness = 0.15;
-
-// Shrinkage. Removing noise moves the vertices both ways along the normals, so that the
-// mean of their displacement along the input's normals stays near 0 (fandisk,
-// anchor_dense, blade: below 0.03 of the noise level, and below a thirtieth of the root
-// mean square displacement); a filter that erodes the shape moves them one way. On
-// meshes of needles across holes or with parts a few faces thick the filters of
-// filter_normals() did that to the clean meshes as much as to noisy ones (CGAL's cheese
-// and anchor: -77 % and -43 % of volume in the crease-preserving phase of the clean
-// meshes, -84 % and -38 % at the end). A phase of the filter therefore ends at the
-// iterate before the one whose mean displacement exceeds both shrinkage_bound times the
-// noise level and systematic_fraction of the root mean square displacement: mostly
-// one-way, and more than the noise explains. The second condition spares the phases
-// whose displacement is mostly noise removed from a shrinking surface: the mean of
-// elephant's crease-preserving phase reaches 0.14 times the noise level, but 0.15 of
-// its root mean square displacement, turbine's (thin walls, whose rims the phase
-// erodes) 0.19 of it before its iterations go on; the collapses of cheese and anchor
-// reach 0.28 to 0.6. (On turbine the stop still comes later, in the continuation of
-// piecewise flat meshes or the needle path: less noise is removed, and less volume lost;
-// see the user manual.)
-constexpr double shrinkage_bound = 0.1;
-constexpr double systematic_fraction = 0.25;
-
-// The smoothed copy of a mesh of needles (smooth_needle_mesh()) erodes meshes whose parts
-// are a few faces thick or whose needles span curved holes, where the noise estimate also
-// counts the shape (CGAL's anchor and cheese: eps' reads 0.36 to 0.61 mean edge length
-// whatever the noise, and the copy, in one implicit step, has a mean displacement of 0.32
-// to 0.59 of its root mean square displacement and -57 to -93 % of volume, where removing
-// the noise of rotor_small and couplingdown gives 0.10 to 0.22). Its time is then halved,
-// up to this many times, until the copy no longer shrinks the shape (3 to 7 halvings
-// there, with one step). Measured
-// with the benchmark's seeds, clean and at 0.1, 0.3, 0.5 noise along the normals, then in
-// random directions (in flow_substeps steps): anchor 2.60, 19.8, 46.0, 49.4 and 19.1,
-// 47.0, 53.1 degrees (before, with the filter alone: 7.09, 32.6, 55.8, 66.5 and 39.3,
-// 55.2, 64.6, at -4 to -32 % of volume); cheese 4.29, 15.4, 41.0, 54.2 and 14.6, 40.0,
-// 56.6 (13.9, 27.4, 51.3, 63.3 and 29.8, 58.6, 69.6, at -9 to -15 %).
-constexpr int needle_time_halvings = 12;
-
-// Thin walls. A normal filter whose result changes the volume of a closed component by
-// more than volume_tolerance has eroded it: on CGAL's turbine (walls about 2.4 mean edge
-// lengths thick, whose rims are strips one face wide between creases, see
-// filter_normals()) the crease-preserving filter shrinks it by 1.3, 7.6 and 15 % at 0.1,
-// 0.3 and 0.5 mean edge length of noise along the normals, while no other closed mesh of
-// the benchmark moves by more than 0.54 % (armadillo at 0.5). The result is then the
-// input smoothed by the cotangent flow for the time eroded_filter_flow_time eps^2 (eps
-// the noise level, plane_fit_noise_level), rescaled to the input's volume, its time
-// halved as that of needle meshes while it shrinks the shape. Measured on turbine with
-// the benchmark's seeds at 0.1, 0.3, 0.5: 5.66, 8.95, 11.7 degrees at -0.02 to -0.13 %
-// of volume, against 10.5, 15.2, 20.9 for the filter. (Chosen with one implicit step
-// instead of flow_substeps: 6.90, 13.3, 18.8, the time halved once, twice, twice; without
-// the halvings 6.20, 9.99, 13.2; with 8 eps^2 8.43, 13.3, 18.8, with 64 eps^2 6.54, 11.4,
-// 14.9.) (The flow would round the creases of the meshes that the
-// filter does not erode: fandisk at 0.3 noise 13.4 degrees against 2.71.) Not applied to
-// the filter's part of a blend with the smoothed copy of a needle mesh (couplingdown at
-// 0.3 and 0.5 noise: 27.3 and 38.0 degrees with it, 26.2 and 32.8 without).
-// A displacement limit above erosion_check_limit (the defaults are 1 for denoise_mesh()
-// and 1.1 for the tool) asks the filter to move the vertices further than the noise:
-// its result is then returned as it is, volume change included.
-constexpr double volume_tolerance = 0.01;
-constexpr double eroded_filter_flow_time = 32.;
-constexpr double erosion_check_limit = 1.1;
-
-// The mean displacement from `input` to `points` along the vertex normals of the input,
-// weighted by the vertices' areas: `normals` are the area-weighted vertex normals of
-// `input` (area_weighted_normals()), whose lengths are the weights.
-inline double mean_normal_displacement(const std::vector<Eigen::Vector3d>& input,
-                                       const std::vector<Eigen::Vector3d>& points,
-                                       const std::vector<Eigen::Vector3d>& normals)
-{
-  double sum = 0, weights = 0;
-  for(std::size_t i = 0; i < points.size(); ++i)
-  {
-    sum += normals[i].dot(points[i] - input[i]);
-    weights += normals[i].norm();
-  }
-  return weights > 0 ? sum / weights : 0.;
-}
 
 // The isotropic filtering of a curved surface (see filter_normals) in small iterations:
 // one Jacobi step of the vertex fit instead of five, then a tangential relaxation of
