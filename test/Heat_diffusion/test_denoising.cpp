@@ -7,7 +7,8 @@
 // (fandisk at 0.1, 0.3 and 0.5 mean edge length of noise, anchor_dense at 0.1),
 // CAD with needle triangles, an organic mesh -- with absolute MAD bounds; validity of
 // the result (no self-intersection, same vertices, finite, volume kept); the
-// displacement limit; clean meshes left unchanged, no collapse of thin parts; agreement
+// displacement limit; clean meshes left unchanged, no collapse of thin parts; the volume
+// rescaling per closed component (three closed components); agreement
 // across kernels and mesh types, scale and rigid-motion invariance, for both denoising
 // methods; parameter checking.
 
@@ -318,6 +319,59 @@ void test_no_collapse()
   }
 }
 
+// The volume rescaling of the smoothing flows (restore_component_volumes()) on a mesh of
+// three closed components (fandisk, elephant and a second fandisk, side by side; CGAL's
+// blobby_3cc has holes): after the flow and a different scaling of each
+// component, each one is brought back to its own volume, its face normals unchanged
+// (a scaling about a point turns no face), and the largest volume change reads 0.
+void test_component_volume_restoration()
+{
+  Mesh mesh = test_support::load<Mesh>("fandisk.off");
+  const Mesh elephant = test_support::load<Mesh>("elephant.off");
+  Mesh shifted = mesh;
+  for(auto v : shifted.vertices())
+    shifted.point(v) = shifted.point(v) + Epick::Vector_3(10., 0., 0.);
+  CGAL::copy_face_graph(elephant, mesh);
+  CGAL::copy_face_graph(shifted, mesh);
+  const HD::Normal_controlled_coordinates<Mesh> ncc(mesh);
+  const HD::internal::Indexed_mesh& indexed = ncc.indexed_mesh();
+  const std::vector<Eigen::Vector3d>& reference = indexed.points;
+  const std::vector<std::size_t> component = HD::internal::vertex_components(indexed);
+  std::vector<std::size_t> labels(component);
+  std::sort(labels.begin(), labels.end());
+  labels.erase(std::unique(labels.begin(), labels.end()), labels.end());
+  CHECK_MESSAGE(labels.size() == 3, "three components: " << labels.size() << " components");
+
+  std::vector<Eigen::Vector3d> points;
+  CHECK(HD::internal::implicit_smoothing(indexed, reference, 4. * std::pow(HD::internal::mean_edge_length(indexed), 2),
+                                         points, 8));
+  for(std::size_t v = 0; v < points.size(); ++v)
+  {
+    const double scale = 0.6 + 0.3 * double(std::lower_bound(labels.begin(), labels.end(), component[v]) - labels.begin());
+    points[v] *= scale;
+  }
+  const double before = HD::internal::largest_volume_change(indexed, reference, points);
+  CHECK_MESSAGE(before > 0.1, "three components: volume change before the rescaling " << before);
+  std::vector<Eigen::Vector3d> restored = points;
+  HD::internal::restore_component_volumes(indexed, reference, restored);
+  const double after = HD::internal::largest_volume_change(indexed, reference, restored);
+  std::cout << "three components: largest volume change " << before << " -> " << after << std::endl;
+  CHECK_MESSAGE(after < 1e-9, "three components: volume change after the rescaling " << after);
+  const HD::internal::Component_volumes volumes = HD::internal::component_volumes(indexed, reference, restored);
+  for(std::size_t c : labels)
+    CHECK_MESSAGE(volumes.closed[c] && std::abs(volumes.volume[c] / volumes.reference_volume[c] - 1) < 1e-9,
+                  "three components: component " << c << " volume " << volumes.volume[c] << " against "
+                                            << volumes.reference_volume[c]);
+  double largest_turn = 0;
+  for(const auto& t : indexed.triangles)
+  {
+    const Eigen::Vector3d a = (points[t[1]] - points[t[0]]).cross(points[t[2]] - points[t[0]]).normalized();
+    const Eigen::Vector3d b = (restored[t[1]] - restored[t[0]]).cross(restored[t[2]] - restored[t[0]]).normalized();
+    largest_turn = (std::max)(largest_turn, (a - b).norm());
+  }
+  CHECK_MESSAGE(largest_turn < 1e-9, "three components: a face turned by " << largest_turn);
+}
+
 // The iterations stop once the vertices have moved as far as the estimated noise
 // times the limit (checked after each iteration, so limits closer than one
 // iteration's move may give the same result): a larger limit never moves them less,
@@ -526,5 +580,6 @@ int main()
   test_weak_noise_on_cad();
   test_clean_meshes();
   test_no_collapse();
+  test_component_volume_restoration();
   return test_support::report("test_denoising");
 }
