@@ -117,12 +117,18 @@ enum class Denoising_method
 ///     stronger one of the noise's high frequencies)
 ///     (the cotangent operator does not depend on the shape of the triangles), where
 ///     \f$ \hat\varepsilon' \f$ is the noise level of 1 measured along the normals of \f$ P \f$.
-///     For \f$ \nu \geq 2 \f$ the result is \f$ S \f$ with each closed component scaled about
-///     its centroid to the volume it encloses in the input (mean curvature flow shrinks a
-///     closed surface; the volume rescaling of Desbrun et al. 1999); for \f$ 1 \leq \nu < 2 \f$
-///     it is the blend, with weights \f$ \nu - 1 \f$ and \f$ 2 - \nu \f$, of that and of the
-///     filtering that follows. Where \f$ S \f$ shrinks the shape (see below), its time is
-///     halved until it does not, at most 12 times, and if it still does, that filtering is
+///     Let \f$ W \f$ be the input smoothed by the same flow, in 8 steps, for the time at
+///     which the neighbour correlation of its residual \f$ r = p - W \f$,
+///     \f$ \sum_{ij} r_i \cdot r_j / \sum_{ij} (|r_i|^2 + |r_j|^2)/2 \f$ over the pairs of
+///     neighbours, reaches 0.3: searched over \f$ 2^k \hat\varepsilon^2 \f$,
+///     \f$ -8 \leq k \leq 8 \f$, from \f$ k = 0 \f$, and interpolated in log time between the
+///     two times around the crossing. While the flow removes noise its residual is white
+///     (a correlation near 0); once it removes shape, which is smooth, the residual turns
+///     correlated. For \f$ \nu \geq 1 \f$ the result is \f$ S \f$ if its time is the longer
+///     and it does not shrink the shape (see below), else \f$ W \f$, with each closed
+///     component scaled about its centroid to the volume it encloses in the input (mean
+///     curvature flow shrinks a closed surface; the volume rescaling of Desbrun et al.
+///     1999). If the flow fails, the filtering that follows is
 ///     the result alone. It fits the vertices in one sparse least-squares solve,
 ///     \f$ \min_x \sum_f a_f \sum_{ij \in f} (n_f \cdot (x_j - x_i))^2 + 0.01 \sum_i m_i |x_i - v_i|^2 \f$,
 ///     to the face normals \f$ n_f \f$ of \f$ S \f$; for \f$ \nu \geq 1 \f$ the isotropic filtering then runs from the fit
@@ -144,10 +150,8 @@ enum class Denoising_method
 /// where the noise level of 1 also counts the shape).
 /// Where the result of the filter (4, 5, or 6 without \f$ S \f$) changes the volume of a closed
 /// component by more than 1 %, the filter has eroded the shape (the rims of thin walls,
-/// strips one face wide between creases): the result is then the input smoothed by the
-/// same flow for the time \f$ 32 \hat\varepsilon^2 \f$, rescaled as in 6, its time halved as
-/// there while it shrinks the shape. Not with a `displacement_limit` above 1.1, which asks
-/// for the displacement.
+/// strips one face wide between creases): the result is then \f$ W \f$ of 6, rescaled as
+/// there. Not with a `displacement_limit` above 1.1, which asks for the displacement.
 /// A `normal_sigma` given by the user replaces 3 to 6 by iterations with that width until
 /// the displacement of 3. A mesh whose noise level is 0 is left unchanged, and so is a
 /// mesh whose result of 3, measured as in 1, is as rough as the input (noise and the
@@ -275,9 +279,9 @@ enum class Denoising_method
 /// with TBB), at most `number_of_iterations` iterations plus those of the isotropic
 /// filtering on curved surfaces; two sparse Cholesky factorisations of n unknowns (the
 /// smoothing of the widths of 3 and the smoothed copy \f$ P \f$), on meshes of needles one
-/// more (\f$ S \f$), up to 12 more where the time of \f$ S \f$ or of the flow of thin walls is
-/// halved, and where \f$ S \f$ is not the result alone a conjugate gradient solve of 3n
-/// unknowns (see `benchmark_denoising` for times measured against the published filters).
+/// more (\f$ S \f$), and for \f$ W \f$ (needles with \f$ \nu \geq 1 \f$, eroded thin walls) up
+/// to 10 numerical factorisations of one symbolic analysis, and for
+/// \f$ 0 < \nu < 1 \f$ a conjugate gradient solve of 3n unknowns (see `benchmark_denoising` for times measured against the published filters).
 /// Signature diffusion: per iteration, one edge-weighted heat kernel (a sparse Cholesky
 /// factorisation and a Lanczos iteration of \f$ O(n m^2) \f$ dense work: most of the time),
 /// the operator \f$ A_t \f$ (linear in n), k sparse products and one sparse Cholesky

@@ -1,15 +1,15 @@
 // Copyright (c) 2026 The CGAL Heat_diffusion developers.
 // SPDX-License-Identifier: LGPL-3.0-or-later
 //
-// The surface the denoising returns or starts from on meshes of needle triangles: an
-// implicit mean curvature flow with the cotangent operator (which does not depend on the
-// shape of the triangles), the measure of how needle-like the faces are, the smoothed
-// copy of such a mesh, and the vertex positions that best fit given face normals in one
+// The surface the denoising returns or starts from on meshes of needle triangles: the
+// measure of how needle-like the faces are, the copy of such a mesh smoothed by the
+// cotangent flow, and the vertex positions that best fit given face normals in one
 // least-squares solve.
 
 #ifndef CGAL_HEAT_DIFFUSION_INTERNAL_DENOISING_NEEDLE_SURFACE_FIT_H
 #define CGAL_HEAT_DIFFUSION_INTERNAL_DENOISING_NEEDLE_SURFACE_FIT_H
 
+#include <CGAL/Heat_diffusion/internal/Denoising/cotangent_flow.h>
 #include <CGAL/Heat_diffusion/internal/Denoising/face_adjacency.h>
 #include <CGAL/Heat_diffusion/internal/Denoising/noise_level.h>
 #include <CGAL/Heat_diffusion/internal/Indexed_mesh.h>
@@ -28,100 +28,6 @@
 namespace CGAL {
 namespace Heat_diffusion {
 namespace internal {
-
-// The cotangent stiffness matrix of `points` (the Dirichlet energy of the piecewise
-// linear interpolant: positive semi-definite whatever the angles, needles included) and
-// the barycentric vertex masses. Corners of a degenerate triangle add nothing.
-inline void cotangent_stiffness(const Indexed_mesh& mesh, const std::vector<Eigen::Vector3d>& points,
-                                Eigen::SparseMatrix<double>& stiffness, std::vector<double>& masses)
-{
-  const std::size_t n = points.size();
-  std::vector<Eigen::Triplet<double> > triplets;
-  triplets.reserve(12 * mesh.triangles.size());
-  masses.assign(n, 0.);
-  for(const auto& t : mesh.triangles)
-  {
-    const double area = 0.5 * (points[t[1]] - points[t[0]]).cross(points[t[2]] - points[t[0]]).norm();
-    for(int c = 0; c < 3; ++c)
-    {
-      if(std::isfinite(area))
-        masses[t[c]] += area / 3.;
-      const std::size_t k = t[c], i = t[(c + 1) % 3], j = t[(c + 2) % 3];
-      const Eigen::Vector3d a = points[i] - points[k], b = points[j] - points[k];
-      const double sine = a.cross(b).norm();
-      if(!(sine > 1e-12 * a.norm() * b.norm()))
-        continue;
-      const double w = 0.5 * a.dot(b) / sine;  // half the cotangent of the angle at k
-      if(!std::isfinite(w))
-        continue;
-      triplets.emplace_back(Eigen::Index(i), Eigen::Index(i), w);
-      triplets.emplace_back(Eigen::Index(j), Eigen::Index(j), w);
-      triplets.emplace_back(Eigen::Index(i), Eigen::Index(j), -w);
-      triplets.emplace_back(Eigen::Index(j), Eigen::Index(i), -w);
-    }
-  }
-  stiffness.resize(Eigen::Index(n), Eigen::Index(n));
-  stiffness.setFromTriplets(triplets.begin(), triplets.end());
-  // A vertex without area (isolated, or on degenerate faces only) keeps a small mass,
-  // so that the systems below stay definite and leave it where it is.
-  double total = 0;
-  for(double m : masses)
-    total += m;
-  const double floor = n > 0 && total > 0 ? 1e-6 * total / double(n) : 1.;
-  for(double& m : masses)
-    m = (std::max)(m, floor);
-}
-
-inline void silence(Sparse_cholesky& cholesky)
-{
-#ifdef CGAL_HEAT_DIFFUSION_USE_CHOLMOD
-  cholesky.cholmod().print = 0;  // failures are reported through info()
-#else
-  static_cast<void>(cholesky);
-#endif
-}
-
-// `steps` implicit steps of the mean curvature flow with the cotangent operator, of
-// time t / steps each, (M + (t / steps) L) x_{k+1} = M x_k from x_0 = p, with L and M
-// those of p: a smoothing of the positions that does not depend on the shape of the
-// triangles (the operator converges to the Laplace-Beltrami operator on needles as on
-// well-shaped triangles). One factorisation serves all the steps. Returns false, leaving
-// `result` untouched, if the factorisation or a solve fails.
-inline bool implicit_smoothing(const Indexed_mesh& mesh, const std::vector<Eigen::Vector3d>& points, double time,
-                               std::vector<Eigen::Vector3d>& result, std::size_t steps = 1)
-{
-  const std::size_t n = points.size();
-  steps = (std::max)(steps, std::size_t(1));
-  time /= double(steps);
-  Eigen::SparseMatrix<double> stiffness;
-  std::vector<double> masses;
-  cotangent_stiffness(mesh, points, stiffness, masses);
-  Eigen::SparseMatrix<double> system = time * stiffness;
-  Eigen::MatrixXd rhs(Eigen::Index(n), 3);
-  for(std::size_t i = 0; i < n; ++i)
-  {
-    system.coeffRef(Eigen::Index(i), Eigen::Index(i)) += masses[i];
-    rhs.row(Eigen::Index(i)) = masses[i] * points[i].transpose();
-  }
-  Sparse_cholesky cholesky;
-  silence(cholesky);
-  cholesky.compute(system);
-  if(cholesky.info() != Eigen::Success)
-    return false;
-  Eigen::MatrixXd x = cholesky.solve(rhs);
-  for(std::size_t step = 1; step < steps && cholesky.info() == Eigen::Success; ++step)
-  {
-    for(std::size_t i = 0; i < n; ++i)
-      rhs.row(Eigen::Index(i)) = masses[i] * x.row(Eigen::Index(i));
-    x = cholesky.solve(rhs);
-  }
-  if(cholesky.info() != Eigen::Success || !x.allFinite())
-    return false;
-  result.resize(n);
-  for(std::size_t i = 0; i < n; ++i)
-    result[i] = x.row(Eigen::Index(i)).transpose();
-  return true;
-}
 
 // The median over the faces of 2 area / (longest edge)^2: the smallest altitude over
 // the longest edge, 0.87 for an equilateral triangle, under 0.17 for a face whose
@@ -234,9 +140,9 @@ inline bool fit_vertices_to_normals_least_squares(const Indexed_mesh& mesh, cons
 // of the normals. There the positions are smoothed with the cotangent operator, whose
 // result does not depend on the triangles' shape, for the time
 // needle_smoothing_time nu eps^2 (eps the noise level along the smoothed normals, see plane_fit_noise_level).
-// From nu = 1 on, that smoothed surface, rescaled to the input's volume, is the result
-// (blended with the filter's for nu < 2, see filter_normals()); below, and where it
-// erodes the shape, the vertices are fitted to its normals in one least-squares solve
+// From nu = 1 on, a smoothed surface, rescaled to the input's volume, is the result
+// (this one or the flow stopped by its residual, see filter_normals()); below, the
+// vertices are fitted to its normals in one least-squares solve
 // anchored to the input (weight needle_fit_anchor_weight), and the normal filter goes
 // on from there. The smoothed surface alone was measured against that fit followed by
 // the filter with the benchmark's seeds, at 0.1, 0.3 and 0.5 mean edge length of noise
@@ -253,18 +159,6 @@ inline bool fit_vertices_to_normals_least_squares(const Indexed_mesh& mesh, cons
 constexpr double needle_reference_aspect = 0.5;
 constexpr double needle_smoothing_time = 2.;
 constexpr double needle_fit_anchor_weight = 0.01;
-
-// The smoothings that denoise (the smoothed copy of a mesh of needles, and the flow of
-// thin walls in filter_normals()) take this many implicit steps of the same total time:
-// they smooth the shape's low frequencies as one step does (by 1 - t lambda to first
-// order) but damp the noise's high ones far more ((1 + t lambda / K)^-K against
-// (1 + t lambda)^-1), for K - 1 more solves with the same factorisation. Measured with
-// the benchmark's seeds on the 42 noisy rows (0.1, 0.3, 0.5, both directions) of blade,
-// rotor_small, anchor, cheese, couplingdown, turbine and b9_mesh: mean MAD 25.3 degrees
-// with one step, 23.1 with 4, 22.9 with 8, 22.9 with 16; blade at 0.5 along the normals
-// 11.2, 4.60, 4.45, 4.41; the rows at 0.1 lose a little (rotor_small 9.29 to 10.3,
-// couplingdown 17.2 to 18.9).
-constexpr std::size_t flow_substeps = 8;
 
 // The smoothed copy of a mesh of needles (see needle_reference_aspect): the needle
 // factor nu, the noise level eps along the normals of the pilot surface

@@ -10,7 +10,7 @@
 #define CGAL_HEAT_DIFFUSION_INTERNAL_DENOISING_NORMAL_WIDTHS_H
 
 #include <CGAL/Heat_diffusion/internal/Denoising/face_adjacency.h>
-#include <CGAL/Heat_diffusion/internal/Denoising/needle_surface_fit.h>
+#include <CGAL/Heat_diffusion/internal/Denoising/cotangent_flow.h>
 #include <CGAL/Heat_diffusion/internal/Indexed_mesh.h>
 
 #include <Eigen/Core>

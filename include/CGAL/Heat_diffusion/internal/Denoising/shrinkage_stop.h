@@ -2,9 +2,8 @@
 // SPDX-License-Identifier: LGPL-3.0-or-later
 //
 // The rules that keep denoise_mesh()'s normal filtering from shrinking the shape: the
-// one-way displacement that ends its phases, the halvings of the time of its smoothing
-// flows, and the volume check that replaces a filter that eroded thin walls by the
-// volume-preserving flow.
+// one-way displacement that ends its phases and rejects a needle copy, and the volume
+// check that replaces a filter that eroded thin walls by the volume-preserving flow.
 
 #ifndef CGAL_HEAT_DIFFUSION_INTERNAL_DENOISING_SHRINKAGE_STOP_H
 #define CGAL_HEAT_DIFFUSION_INTERNAL_DENOISING_SHRINKAGE_STOP_H
@@ -39,43 +38,23 @@ namespace internal {
 constexpr double shrinkage_bound = 0.1;
 constexpr double systematic_fraction = 0.25;
 
-// The smoothed copy of a mesh of needles (smooth_needle_mesh()) erodes meshes whose parts
-// are a few faces thick or whose needles span curved holes, where the noise estimate also
-// counts the shape (CGAL's anchor and cheese: eps' reads 0.36 to 0.61 mean edge length
-// whatever the noise, and the copy, in one implicit step, has a mean displacement of 0.32
-// to 0.59 of its root mean square displacement and -57 to -93 % of volume, where removing
-// the noise of rotor_small and couplingdown gives 0.10 to 0.22). Its time is then halved,
-// up to this many times, until the copy no longer shrinks the shape (3 to 7 halvings
-// there, with one step). Measured
-// with the benchmark's seeds, clean and at 0.1, 0.3, 0.5 noise along the normals, then in
-// random directions (in flow_substeps steps): anchor 2.60, 19.8, 46.0, 49.4 and 19.1,
-// 47.0, 53.1 degrees (before, with the filter alone: 7.09, 32.6, 55.8, 66.5 and 39.3,
-// 55.2, 64.6, at -4 to -32 % of volume); cheese 4.29, 15.4, 41.0, 54.2 and 14.6, 40.0,
-// 56.6 (13.9, 27.4, 51.3, 63.3 and 29.8, 58.6, 69.6, at -9 to -15 %).
-constexpr int needle_time_halvings = 12;
-
 // Thin walls. A normal filter whose result changes the volume of a closed component by
 // more than volume_tolerance has eroded it: on CGAL's turbine (walls about 2.4 mean edge
 // lengths thick, whose rims are strips one face wide between creases, see
 // filter_normals()) the crease-preserving filter shrinks it by 1.3, 7.6 and 15 % at 0.1,
 // 0.3 and 0.5 mean edge length of noise along the normals, while no other closed mesh of
 // the benchmark moves by more than 0.54 % (armadillo at 0.5). The result is then the
-// input smoothed by the cotangent flow for the time eroded_filter_flow_time eps^2 (eps
-// the noise level, plane_fit_noise_level), rescaled to the input's volume, its time
-// halved as that of needle meshes while it shrinks the shape. Measured on turbine with
-// the benchmark's seeds at 0.1, 0.3, 0.5: 5.66, 8.95, 11.7 degrees at -0.02 to -0.13 %
-// of volume, against 10.5, 15.2, 20.9 for the filter. (Chosen with one implicit step
-// instead of flow_substeps: 6.90, 13.3, 18.8, the time halved once, twice, twice; without
-// the halvings 6.20, 9.99, 13.2; with 8 eps^2 8.43, 13.3, 18.8, with 64 eps^2 6.54, 11.4,
-// 14.9.) (The flow would round the creases of the meshes that the
-// filter does not erode: fandisk at 0.3 noise 13.4 degrees against 2.71.) Not applied to
-// the filter's part of a blend with the smoothed copy of a needle mesh (couplingdown at
-// 0.3 and 0.5 noise: 27.3 and 38.0 degrees with it, 26.2 and 32.8 without).
+// input smoothed by the cotangent flow until its residual turns correlated
+// (smooth_until_residual_is_correlated()), rescaled to the input's volume. Measured on
+// turbine with the benchmark's seeds at 0.1, 0.2, 0.3, 0.5: 5.92, 7.05, 8.17, 10.3
+// degrees at -0.02 to -0.13 % of volume, against 10.5, 11.3, 15.2, 20.9 for the filter
+// (and 5.66, 7.92, 8.95, 11.7 for the flow at the fixed time 32 eps^2, halved while it
+// shrank the shape). (The flow would round the creases of the meshes that the filter
+// does not erode: fandisk at 0.3 noise 13.4 degrees against 2.71.)
 // A displacement limit above erosion_check_limit (the defaults are 1 for denoise_mesh()
 // and 1.1 for the tool) asks the filter to move the vertices further than the noise:
 // its result is then returned as it is, volume change included.
 constexpr double volume_tolerance = 0.01;
-constexpr double eroded_filter_flow_time = 32.;
 constexpr double erosion_check_limit = 1.1;
 
 // The mean displacement from `input` to `points` along the vertex normals of the input,
