@@ -128,7 +128,10 @@ enum class Denoising_method
 ///     and it does not shrink the shape (see below), else \f$ W \f$, with each closed
 ///     component scaled about its centroid to the volume it encloses in the input (mean
 ///     curvature flow shrinks a closed surface; the volume rescaling of Desbrun et al.
-///     1999). If the flow fails, the filtering that follows is
+///     1999). Where \f$ S \f$ is the longer and shrinks the shape, \f$ W \f$ is relinearised:
+///     3 implicit steps, each with the operator \f$ L, M \f$ of the points it starts from
+///     (the cotangent weights of noisy needles are themselves noise), stopped by the same
+///     rule. If the flow fails, the filtering that follows is
 ///     the result alone. It fits the vertices in one sparse least-squares solve,
 ///     \f$ \min_x \sum_f a_f \sum_{ij \in f} (n_f \cdot (x_j - x_i))^2 + 0.01 \sum_i m_i |x_i - v_i|^2 \f$,
 ///     to the face normals \f$ n_f \f$ of \f$ S \f$; for \f$ \nu \geq 1 \f$ the isotropic filtering then runs from the fit
@@ -280,7 +283,8 @@ enum class Denoising_method
 /// filtering on curved surfaces; two sparse Cholesky factorisations of n unknowns (the
 /// smoothing of the widths of 3 and the smoothed copy \f$ P \f$), on meshes of needles one
 /// more (\f$ S \f$), and for \f$ W \f$ (needles with \f$ \nu \geq 1 \f$, eroded thin walls) up
-/// to 10 numerical factorisations of one symbolic analysis, and for
+/// to 10 numerical factorisations of one symbolic analysis (relinearised: up to 30
+/// factorisations), and for
 /// \f$ 0 < \nu < 1 \f$ a conjugate gradient solve of 3n unknowns (see `benchmark_denoising` for times measured against the published filters).
 /// Signature diffusion: per iteration, one edge-weighted heat kernel (a sparse Cholesky
 /// factorisation and a Lanczos iteration of \f$ O(n m^2) \f$ dense work: most of the time),

@@ -366,14 +366,16 @@ inline std::vector<Eigen::Vector3d> filter_normals(const Indexed_mesh& mesh, con
   // (blade: 94 to 183 eps^2 against 26 to 66 for the stop). The copy of a mesh whose
   // parts are a few faces thick, or whose needles span curved holes, shrinks them
   // (anchor and cheese, where the noise estimate also counts the shape: eps' reads 0.36
-  // to 0.61 mean edge length whatever the noise). Measured with the benchmark's seeds,
+  // to 0.61 mean edge length whatever the noise); the flow that replaces it is then the
+  // relinearised one (see relinearised_steps). Measured with the benchmark's seeds,
   // mean MAD over the six noisy rows (0.1, 0.3, 0.5, both directions), against the copy
   // for nu >= 2, its blend with weight nu - 1 with the filter below for 1 <= nu < 2, and
-  // the copy's time halved while it shrank the shape: anchor 34.5 degrees against 39.1,
-  // cheese 23.9 against 36.9, b9_mesh (nu 1.05 to 2.1) 23.0 against 26.1, couplingdown
+  // the copy's time halved while it shrank the shape: anchor 30.3 degrees against 39.1,
+  // cheese 20.2 against 36.9, b9_mesh (nu 1.05 to 2.1) 23.0 against 26.1, couplingdown
   // 25.1 against 25.7, turbine in random directions at 0.3 and 0.5 (nu 1.3 and 1.9) 8.13
   // and 10.96 against 19.2 and 22.8; blade and rotor_small unchanged (the copy). If the
-  // flow fails, the filter below is the result.
+  // relinearised flow fails, the flow with the input's operator is the result, and if
+  // that fails, the filter below.
   if(!needles.points.empty())
   {
     if(needle_factor >= 1)
@@ -385,8 +387,15 @@ inline std::vector<Eigen::Vector3d> filter_normals(const Indexed_mesh& mesh, con
           std::vector<Eigen::Vector3d> flowed;
           flowed.swap(points);
           points = needles.points;
+          std::vector<Eigen::Vector3d> relinearised;
+          double relinearised_time = 0;
           if(shrinkage() == 0)
             restore_component_volumes(mesh, mesh.points, points);
+          else if(smooth_relinearised_until_residual_is_correlated(mesh, noise, relinearised, relinearised_time))
+          {
+            restore_component_volumes(mesh, mesh.points, relinearised);
+            points.swap(relinearised);
+          }
           else
             points.swap(flowed);
         }
