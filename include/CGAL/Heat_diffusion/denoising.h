@@ -284,8 +284,8 @@ enum class Denoising_method
 /// smoothing of the widths of 3 and the smoothed copy \f$ P \f$), on meshes of needles one
 /// more (\f$ S \f$), and for \f$ W \f$ (needles with \f$ \nu \geq 1 \f$, eroded thin walls) up
 /// to 10 numerical factorisations of one symbolic analysis (relinearised: up to 30
-/// factorisations), and for
-/// \f$ 0 < \nu < 1 \f$ a conjugate gradient solve of 3n unknowns (see `benchmark_denoising` for times measured against the published filters).
+/// factorisations), and for \f$ 0 < \nu < 1 \f$ a conjugate gradient solve of 3n unknowns
+/// (see `benchmark_denoising` for times measured against the published filters).
 /// Signature diffusion: per iteration, one edge-weighted heat kernel (a sparse Cholesky
 /// factorisation and a Lanczos iteration of \f$ O(n m^2) \f$ dense work: most of the time),
 /// the operator \f$ A_t \f$ (linear in n), k sparse products and one sparse Cholesky
