@@ -305,7 +305,8 @@ void test_no_collapse()
     double bound;
   };
   for(const Case c : {Case{"anchor.off", 0., 0.5}, Case{"anchor.off", 0.3, 36.3}, Case{"cheese.off", 0.1, 11.9},
-                      Case{"turbine.off", 0.3, 9.4}})
+                      Case{"turbine.off", 0.3, 9.4}, Case{"couplingdown.off", 0.1, 16.5},
+                      Case{"rotor_small.off", 0.1, 8.6}})
   {
     const Mesh clean = test_support::load<Mesh>(c.file);
     Mesh noisy = clean;
@@ -322,6 +323,36 @@ void test_no_collapse()
     CHECK_MESSAGE(mad < c.bound, c.file << ": MAD " << mad);
     if(c.noise > 0)
       CHECK_MESSAGE(mad < noisy_mad, c.file << ": MAD " << mad << " against the noisy input's " << noisy_mad);
+  }
+}
+
+// The weight of the needle copy (needle_copy_weight()): at the stop of the flow, the
+// residual of blade at 0.3 along the normals is correlated by the vertices' sliding
+// along its needles, not along the normals (the copy is taken: weight 1), that of
+// couplingdown at 0.1 along the normals, by removed shape (the flow is kept: weight 0).
+void test_needle_copy_weight()
+{
+  struct Case
+  {
+    const char* file;
+    double noise;
+    double weight;
+  };
+  for(const Case c : {Case{"blade.off", 0.3, 1.}, Case{"couplingdown.off", 0.1, 0.}})
+  {
+    Mesh noisy = test_support::load<Mesh>(c.file);
+    test_support::add_normal_noise(noisy, c.noise, 5);
+    const HD::Normal_controlled_coordinates<Mesh> ncc(noisy);
+    const HD::internal::Indexed_mesh& indexed = ncc.indexed_mesh();
+    const HD::internal::Face_adjacency adjacency = HD::internal::make_face_adjacency(indexed);
+    const double noise = HD::internal::plane_fit_noise_level(indexed, adjacency, indexed.points);
+    HD::internal::Cotangent_flow flow(indexed, indexed.points);
+    std::vector<Eigen::Vector3d> stopped;
+    double time = 0;
+    CHECK(HD::internal::smooth_until_residual_is_correlated(indexed, noise, flow, stopped, time));
+    const double weight = HD::internal::needle_copy_weight(indexed, adjacency, stopped);
+    std::cout << c.file << ", noise " << c.noise << ": needle copy weight " << weight << std::endl;
+    CHECK_MESSAGE(weight == c.weight, c.file << ": needle copy weight " << weight);
   }
 }
 
@@ -360,12 +391,30 @@ void test_whiteness_stop()
       CHECK(std::abs(HD::internal::residual_neighbour_correlation(indexed, input, moved) - 1) < 1e-12);
       const double white = HD::internal::residual_neighbour_correlation(indexed, input, perturbed);
       CHECK_MESSAGE(std::abs(white) < 0.05, "independent noise: residual correlation " << white);
+      // Along the normals: a move of the same length along every unit normal is
+      // correlated to 1 whatever moves it adds within the surface; independent noise is
+      // white along the normals too.
+      const HD::internal::Face_adjacency input_adjacency = HD::internal::make_face_adjacency(indexed);
+      std::vector<Eigen::Vector3d> normals, lifted = perturbed;
+      HD::internal::area_weighted_normals(indexed, input_adjacency, input, normals);
+      for(std::size_t v = 0; v < input.size(); ++v)
+      {
+        const Eigen::Vector3d unit = normals[v].normalized();
+        const Eigen::Vector3d within = (perturbed[v] - input[v]) - unit * unit.dot(perturbed[v] - input[v]);
+        lifted[v] = input[v] + within - 0.1 * edge * unit;
+      }
+      CHECK(HD::internal::residual_neighbour_correlation(indexed, input, lifted) < 0.9);
+      CHECK(std::abs(HD::internal::residual_neighbour_correlation(indexed, input, lifted, &normals) - 1) < 1e-12);
+      const double white_along =
+          HD::internal::residual_neighbour_correlation(indexed, input, perturbed, &normals);
+      CHECK_MESSAGE(std::abs(white_along) < 0.05, "independent noise: along the normals " << white_along);
     }
     const HD::internal::Face_adjacency adjacency = HD::internal::make_face_adjacency(indexed);
     const double noise = HD::internal::plane_fit_noise_level(indexed, adjacency, input);
     std::vector<Eigen::Vector3d> smoothed;
     double time = 0;
-    CHECK(HD::internal::smooth_until_residual_is_correlated(indexed, noise, smoothed, time));
+    HD::internal::Cotangent_flow flow(indexed, input);
+    CHECK(HD::internal::smooth_until_residual_is_correlated(indexed, noise, flow, smoothed, time));
     const double correlation = HD::internal::residual_neighbour_correlation(indexed, input, smoothed);
     double largest_move = 0;
     for(std::size_t v = 0; v < input.size(); ++v)
@@ -389,7 +438,6 @@ void test_whiteness_stop()
       CHECK_MESSAGE(mad < noisy_mad / 1.5, "noisy: MAD " << noisy_mad << " -> " << mad);
       // A flow that fails above 4 eps^2, below the crossing: the stop keeps the last
       // white time, 4 eps^2, and its result.
-      HD::internal::Cotangent_flow flow(indexed, input);
       std::vector<Eigen::Vector3d> limited;
       double limited_time = 0;
       CHECK(HD::internal::smooth_until_residual_is_correlated(
@@ -675,6 +723,7 @@ int main()
   test_clean_meshes();
   test_no_collapse();
   test_whiteness_stop();
+  test_needle_copy_weight();
   test_component_volume_restoration();
   return test_support::report("test_denoising");
 }

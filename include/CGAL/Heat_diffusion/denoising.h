@@ -124,8 +124,13 @@ enum class Denoising_method
 ///     \f$ -8 \leq k \leq 8 \f$, from \f$ k = 0 \f$, and interpolated in log time between the
 ///     two times around the crossing. While the flow removes noise its residual is white
 ///     (a correlation near 0); once it removes shape, which is smooth, the residual turns
-///     correlated. For \f$ \nu \geq 1 \f$ the result is \f$ S \f$ if its time is the longer
-///     and it does not shrink the shape (see below), else \f$ W \f$, with each closed
+///     correlated. For \f$ \nu \geq 1 \f$ the result is \f$ W \f$, or, where the time of
+///     \f$ S \f$ is the longer and \f$ S \f$ does not shrink the shape (see below),
+///     \f$ w S + (1 - w) W \f$: with \f$ f \f$ the fraction of the correlation at the stop of
+///     \f$ W \f$ that the residual's components along the normals of \f$ W \f$ keep,
+///     \f$ w = 1 \f$ for \f$ f \leq 1/3 \f$ (the correlation comes from the vertices' sliding
+///     along the needles, which removes no shape), \f$ w = 0 \f$ for \f$ f \geq 1 \f$,
+///     linear between. The result has each closed
 ///     component scaled about its centroid to the volume it encloses in the input (mean
 ///     curvature flow shrinks a closed surface; the volume rescaling of Desbrun et al.
 ///     1999). Where \f$ S \f$ is the longer and shrinks the shape, \f$ W \f$ is relinearised:

@@ -162,21 +162,33 @@ constexpr std::size_t flow_substeps = 8;
 // -1 and 1. Noise is independent from vertex to vertex: while the flow removes noise, its
 // residual is white (a correlation near 0, slightly negative); once it removes shape,
 // which is smooth, the residual turns correlated (towards 1). 0 for equal point sets.
+// With `normals` (per vertex, not necessarily of unit length), the same for the
+// residual's components r_i . n_i / |n_i| along them, which ignore the moves within the
+// surface.
 inline double residual_neighbour_correlation(const Indexed_mesh& mesh, const std::vector<Eigen::Vector3d>& p,
-                                             const std::vector<Eigen::Vector3d>& q)
+                                             const std::vector<Eigen::Vector3d>& q,
+                                             const std::vector<Eigen::Vector3d>* normals = nullptr)
 {
   double products = 0, squares = 0;
-  for(std::size_t i = 0; i < p.size(); ++i)
+  auto add = [&](auto ri, auto rj) {
+    products += ri.dot(rj);
+    squares += 0.5 * (ri.squaredNorm() + rj.squaredNorm());
+  };
+  std::vector<Eigen::Matrix<double, 1, 1> > along(normals != nullptr ? p.size() : 0);
+  for(std::size_t i = 0; i < along.size(); ++i)
   {
-    const Eigen::Vector3d ri = p[i] - q[i];
+    const double length = (*normals)[i].norm();
+    along[i](0) = length > 0 ? (p[i] - q[i]).dot((*normals)[i]) / length : 0.;
+  }
+  for(std::size_t i = 0; i < p.size(); ++i)
     for(std::size_t k = mesh.fan_begin[i]; k < mesh.fan_begin[i + 1]; ++k)
     {
       const std::size_t j = mesh.fan[k];
-      const Eigen::Vector3d rj = p[j] - q[j];
-      products += ri.dot(rj);
-      squares += 0.5 * (ri.squaredNorm() + rj.squaredNorm());
+      if(normals != nullptr)
+        add(along[i], along[j]);
+      else
+        add(Eigen::Vector3d(p[i] - q[i]), Eigen::Vector3d(p[j] - q[j]));
     }
-  }
   return squares > 0 ? products / squares : 0.;
 }
 
@@ -221,13 +233,17 @@ constexpr std::size_t relinearised_steps = 3;
 
 // The relinearised flow: `steps` implicit steps of time t / steps, each with the
 // operator of the points it starts from (the semi-implicit mean curvature flow of
-// Desbrun et al. 1999), instead of the operator of the input for all of them. Returns
-// false, leaving `result` untouched, if a factorisation or a solve fails.
-inline bool relinearised_smoothing(const Indexed_mesh& mesh, const std::vector<Eigen::Vector3d>& points, double time,
-                                   std::size_t steps, std::vector<Eigen::Vector3d>& result)
+// Desbrun et al. 1999), instead of the operator of the input for all of them. `flow` is
+// the flow of the points it starts from, which takes the first step. Returns false,
+// leaving `result` untouched, if a factorisation or a solve fails.
+inline bool relinearised_smoothing(const Indexed_mesh& mesh, Cotangent_flow& flow, double time, std::size_t steps,
+                                   std::vector<Eigen::Vector3d>& result)
 {
-  std::vector<Eigen::Vector3d> current = points, next;
-  for(std::size_t step = 0; step < steps; ++step)
+  steps = (std::max)(steps, std::size_t(1));
+  std::vector<Eigen::Vector3d> current, next;
+  if(!flow.smooth(time / double(steps), 1, current))
+    return false;
+  for(std::size_t step = 1; step < steps; ++step)
   {
     if(!implicit_smoothing(mesh, current, time / double(steps), next))
       return false;
@@ -298,12 +314,11 @@ bool smooth_until_residual_is_correlated(const Indexed_mesh& mesh, double noise,
   }
 }
 
-// The input smoothed by the flow in flow_substeps steps with the operator of the input
-// (Cotangent_flow), stopped by its residual (see above).
-inline bool smooth_until_residual_is_correlated(const Indexed_mesh& mesh, double noise,
+// The input smoothed by `flow`, the Cotangent_flow of the input, in flow_substeps steps,
+// stopped by its residual (see above).
+inline bool smooth_until_residual_is_correlated(const Indexed_mesh& mesh, double noise, Cotangent_flow& flow,
                                                 std::vector<Eigen::Vector3d>& result, double& time)
 {
-  Cotangent_flow flow(mesh, mesh.points);
   return smooth_until_residual_is_correlated(
       mesh, noise,
       [&](double t, std::vector<Eigen::Vector3d>& smoothed) { return flow.smooth(t, flow_substeps, smoothed); },
@@ -311,14 +326,15 @@ inline bool smooth_until_residual_is_correlated(const Indexed_mesh& mesh, double
 }
 
 // The input smoothed by the relinearised flow in relinearised_steps steps, stopped by its
-// residual (see above).
+// residual (see above); `flow` is the Cotangent_flow of the input.
 inline bool smooth_relinearised_until_residual_is_correlated(const Indexed_mesh& mesh, double noise,
+                                                             Cotangent_flow& flow,
                                                              std::vector<Eigen::Vector3d>& result, double& time)
 {
   return smooth_until_residual_is_correlated(
       mesh, noise,
       [&](double t, std::vector<Eigen::Vector3d>& smoothed) {
-        return relinearised_smoothing(mesh, mesh.points, t, relinearised_steps, smoothed);
+        return relinearised_smoothing(mesh, flow, t, relinearised_steps, smoothed);
       },
       result, time);
 }

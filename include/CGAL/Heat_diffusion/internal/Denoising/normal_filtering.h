@@ -220,12 +220,13 @@ inline std::vector<Eigen::Vector3d> filter_normals(const Indexed_mesh& mesh, con
   std::vector<Eigen::Vector3d> face_normals, centroids, face_scratch, vertex_scratch;
   std::vector<double> areas;
   std::size_t done = 0;
-  auto displacement = [&]() {
+  auto displacement_of = [&](const std::vector<Eigen::Vector3d>& moved) {
     double squares = 0;
     for(std::size_t i = 0; i < n; ++i)
-      squares += (points[i] - mesh.points[i]).squaredNorm();
+      squares += (moved[i] - mesh.points[i]).squaredNorm();
     return std::sqrt(squares / double(n));
   };
+  auto displacement = [&]() { return displacement_of(points); };
   // One iteration; returns the root mean square move of the vertices.
   auto iterate = [&](const std::vector<double>& widths, std::size_t fit_steps = 5, double tangential_weight = 0) {
     const std::vector<Eigen::Vector3d> before = points;
@@ -242,14 +243,15 @@ inline std::vector<Eigen::Vector3d> filter_normals(const Indexed_mesh& mesh, con
       squares += (points[i] - before[i]).squaredNorm();
     return std::sqrt(squares / double(n));
   };
-  // The magnitude of the mean displacement of the points along the input's normals if
-  // they are shrinking the shape (see shrinkage_bound), else 0.
+  // The magnitude of the mean displacement of `moved` along the input's normals if it is
+  // shrinking the shape (see shrinkage_bound), else 0.
   std::vector<Eigen::Vector3d> input_normals;
   area_weighted_normals(mesh, adjacency, mesh.points, input_normals);
-  auto shrinkage = [&]() {
-    const double mean = std::abs(mean_normal_displacement(mesh.points, points, input_normals));
-    return mean > shrinkage_bound * noise && mean >= systematic_fraction * displacement() ? mean : 0.;
+  auto shrinkage_of = [&](const std::vector<Eigen::Vector3d>& moved) {
+    const double mean = std::abs(mean_normal_displacement(mesh.points, moved, input_normals));
+    return mean > shrinkage_bound * noise && mean >= systematic_fraction * displacement_of(moved) ? mean : 0.;
   };
+  auto shrinkage = [&]() { return shrinkage_of(points); };
   std::vector<Eigen::Vector3d> previous;
   // One iteration, undone if it shrinks the shape: then returns false. `move` receives
   // the root mean square move of the iteration.
@@ -275,24 +277,20 @@ inline std::vector<Eigen::Vector3d> filter_normals(const Indexed_mesh& mesh, con
     }
   };
 
-  // The input smoothed by the cotangent flow until what it removes is no longer white
-  // noise (smooth_until_residual_is_correlated()), rescaled to the input's volume,
-  // written to `points`; false, and `points` unchanged, if the flow fails.
-  double whiteness_time = 0;
-  auto smooth_to_whiteness = [&]() {
+  // The result of a normal filter in `points`, or instead, where the filter has eroded
+  // the shape (see volume_tolerance), the input smoothed by the cotangent flow until
+  // what it removes is no longer white noise (smooth_until_residual_is_correlated()),
+  // rescaled to the input's volume (unless the flow fails).
+  auto unless_eroded = [&](Cotangent_flow& flow) {
     std::vector<Eigen::Vector3d> smoothed;
-    if(!smooth_until_residual_is_correlated(mesh, noise, smoothed, whiteness_time))
-      return false;
-    restore_component_volumes(mesh, mesh.points, smoothed);
-    points.swap(smoothed);
-    return true;
-  };
-  // The result of a normal filter in `points`, or the flow instead where the filter has
-  // eroded the shape (see volume_tolerance).
-  auto unless_eroded = [&]() {
+    double time = 0;
     if(options.displacement_limit <= erosion_check_limit &&
-       largest_volume_change(mesh, mesh.points, points) > volume_tolerance)
-      smooth_to_whiteness();
+       largest_volume_change(mesh, mesh.points, points) > volume_tolerance &&
+       smooth_until_residual_is_correlated(mesh, noise, flow, smoothed, time))
+    {
+      restore_component_volumes(mesh, mesh.points, smoothed);
+      points.swap(smoothed);
+    }
   };
 
   if(options.normal_sigma > 0)
@@ -301,7 +299,9 @@ inline std::vector<Eigen::Vector3d> filter_normals(const Indexed_mesh& mesh, con
                  false);
     return points;
   }
-  const std::vector<double> widths = crease_preserving_widths(mesh, adjacency, noise);
+  // The cotangent flow of the input: one symbolic factorisation for all its smoothings.
+  Cotangent_flow flow(mesh, mesh.points);
+  const std::vector<double> widths = crease_preserving_widths(mesh, adjacency, noise, flow);
   run_to_limit(widths, options.displacement_limit * noise, true);
   const std::size_t first_phase = done;
   const double roughness = plane_fit_noise_level(mesh, adjacency, points);
@@ -313,7 +313,7 @@ inline std::vector<Eigen::Vector3d> filter_normals(const Indexed_mesh& mesh, con
   // 2.57 and 8.86 degrees on the piecewise flat path, 1.44 and 5.30 on the needle path;
   // b9_mesh clean and at 0.1 to 0.5 both ways 28.0 and 28.9 to 41.1 against 21.3 and
   // 20.1 to 32.1.
-  const Needle_smoothing needles = smooth_needle_mesh(mesh, adjacency);
+  const Needle_measure needles = measure_needles(mesh, adjacency, flow);
   const double needle_factor = needles.factor;
   if(roughness < piecewise_flat_roughness * noise && needle_factor < 1)
   {
@@ -321,7 +321,7 @@ inline std::vector<Eigen::Vector3d> filter_normals(const Indexed_mesh& mesh, con
     for(std::size_t it = first_phase; it < options.iterations; ++it)
       if(!iterate_unless_shrinking(widths, move) || move < 1e-4 * noise)  // shrinking, or converged
         break;
-    unless_eroded();
+    unless_eroded(flow);
     return points;
   }
   // The noise level of the coarse iterations' stop (meshes of needles), without the
@@ -356,58 +356,19 @@ inline std::vector<Eigen::Vector3d> filter_normals(const Indexed_mesh& mesh, con
   points = mesh.points;
   const double curved_noise =
       needles.noise > 0 ? noise + (std::min)(1., needle_factor) * (needles.noise - noise) : noise;
-  // On a mesh of needles (needle factor nu >= 1) the result is a smoothed copy of the
-  // input, rescaled to its volume (restore_component_volumes()): the needle copy, or the
-  // flow stopped when its residual turns correlated (see whiteness_correlation),
-  // whichever has the longer time, the copy only if it does not shrink the shape
-  // (shrinkage()). The residual's stop is a lower bound: until it, the flow removes
-  // noise; on needles the flow also slides the vertices along the surface, which
-  // correlates the residual without removing shape, and the copy's time can be longer
-  // (blade: 94 to 183 eps^2 against 26 to 66 for the stop). The copy of a mesh whose
-  // parts are a few faces thick, or whose needles span curved holes, shrinks them
-  // (anchor and cheese, where the noise estimate also counts the shape: eps' reads 0.36
-  // to 0.61 mean edge length whatever the noise); the flow that replaces it is then the
-  // relinearised one (see relinearised_steps). Measured with the benchmark's seeds,
-  // mean MAD over the six noisy rows (0.1, 0.3, 0.5, both directions), against the copy
-  // for nu >= 2, its blend with weight nu - 1 with the filter below for 1 <= nu < 2, and
-  // the copy's time halved while it shrank the shape: anchor 30.3 degrees against 39.1,
-  // cheese 20.2 against 36.9, b9_mesh (nu 1.05 to 2.1) 23.0 against 26.1, couplingdown
-  // 25.1 against 25.7, turbine in random directions at 0.3 and 0.5 (nu 1.3 and 1.9) 8.13
-  // and 10.96 against 19.2 and 22.8; blade and rotor_small unchanged (the copy). If the
-  // relinearised flow fails, the flow with the input's operator is the result, and if
-  // that fails, the filter below.
-  if(!needles.points.empty())
+  // On a mesh of needles with nu >= 1 the result is a smoothed copy of the input
+  // (smooth_needle_mesh()); if the flow fails, or for 0 < nu < 1, the vertices fitted to
+  // the normals of the needle copy, anchored to the input, and the filter below.
+  if(needle_factor >= 1 &&
+     smooth_needle_mesh(mesh, adjacency, noise, needles, flow,
+                        [&](const std::vector<Eigen::Vector3d>& copy) { return shrinkage_of(copy) > 0; }, points))
+    return points;
+  if(std::vector<Eigen::Vector3d> copy; needle_copy(needles, flow, copy))
   {
-    if(needle_factor >= 1)
-    {
-      if(smooth_to_whiteness())
-      {
-        if(needles.time > whiteness_time)
-        {
-          std::vector<Eigen::Vector3d> flowed;
-          flowed.swap(points);
-          points = needles.points;
-          std::vector<Eigen::Vector3d> relinearised;
-          double relinearised_time = 0;
-          if(shrinkage() == 0)
-            restore_component_volumes(mesh, mesh.points, points);
-          else if(smooth_relinearised_until_residual_is_correlated(mesh, noise, relinearised, relinearised_time))
-          {
-            restore_component_volumes(mesh, mesh.points, relinearised);
-            points.swap(relinearised);
-          }
-          else
-            points.swap(flowed);
-        }
-        return points;
-      }
-      points = mesh.points;
-    }
-    // The vertices fitted to the normals of the smoothed copy, anchored to the input.
-    std::vector<Eigen::Vector3d> smoothed_normals, smoothed_centroids, fitted;
-    std::vector<double> smoothed_areas;
-    face_geometry(mesh, needles.points, smoothed_normals, smoothed_areas, smoothed_centroids);
-    if(fit_vertices_to_normals_least_squares(mesh, smoothed_normals, mesh.points, needle_fit_anchor_weight, fitted))
+    std::vector<Eigen::Vector3d> copy_normals, copy_centroids, fitted;
+    std::vector<double> copy_areas;
+    face_geometry(mesh, copy, copy_normals, copy_areas, copy_centroids);
+    if(fit_vertices_to_normals_least_squares(mesh, copy_normals, mesh.points, needle_fit_anchor_weight, fitted))
       points.swap(fitted);
   }
   // The fit of a mesh of needles to a smoothed copy shrinks the shape too: it is scaled
@@ -480,7 +441,7 @@ inline std::vector<Eigen::Vector3d> filter_normals(const Indexed_mesh& mesh, con
       relax_tangentially(mesh, adjacency, curved_tangential_weight, points, previous, normals);
     if(needle_weight == 0)
     {
-      unless_eroded();
+      unless_eroded(flow);
       return points;
     }
     small_steps.swap(points);
@@ -490,7 +451,7 @@ inline std::vector<Eigen::Vector3d> filter_normals(const Indexed_mesh& mesh, con
   if(!small_steps.empty())
     for(std::size_t i = 0; i < n; ++i)
       points[i] = needle_weight * points[i] + (1. - needle_weight) * small_steps[i];
-  unless_eroded();
+  unless_eroded(flow);
   return points;
 }
 

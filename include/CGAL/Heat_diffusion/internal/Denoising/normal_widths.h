@@ -66,17 +66,18 @@ constexpr double shape_smoothing_time = 9.;
 // anchor_dense from 3.59, 4.42, 5.19 and 3.48, 4.51, 5.88 to 3.03, 4.37, 5.33 and 2.69, 4.19,
 // 5.75. The factors were chosen on these two meshes (noise factors 0.6 to 0.9, bend factors
 // 1 to 2 and smoothing times 4 and 9 measured).
-// `noise` is the noise level of the input (plane_fit_noise_level). If the smoothing
-// fails, the bend is not known and every face gets the widest width.
+// `noise` is the noise level of the input (plane_fit_noise_level), `flow` the
+// Cotangent_flow of the input. If the smoothing fails, the bend is not known and every
+// face gets the widest width.
 inline std::vector<double> crease_preserving_widths(const Indexed_mesh& mesh, const Face_adjacency& adjacency,
-                                                    double noise)
+                                                    double noise, Cotangent_flow& flow)
 {
   const std::size_t m = mesh.triangles.size();
   std::vector<Eigen::Vector3d> normals, centroids, smoothed;
   std::vector<double> areas;
   const double edge = mean_edge_length(mesh);
   if(!(edge > 0) || !std::isfinite(edge) ||
-     !implicit_smoothing(mesh, mesh.points, shape_smoothing_time * edge * edge, smoothed))
+     !flow.smooth(shape_smoothing_time * edge * edge, 1, smoothed))
     return std::vector<double>(m, crease_preserving_sigma);
   std::vector<double> widths(m);
   face_geometry(mesh, mesh.points, normals, areas, centroids);
