@@ -624,8 +624,8 @@ void test_scale_invariance()
 
 // The noise estimate, the weights and the stop rules use no direction and no absolute
 // length: a rotated and translated mesh gives the rotated and translated result.
-// fandisk takes the crease-preserving path, rotor_small (needles) the smoothed copy and
-// its volume rescaling, anchor (needles, whose thin parts the smoothed copy erodes) the
+// fandisk takes the crease-preserving path, rotor_small (needles) the blend of the
+// needle copy with the flow and its volume rescaling, anchor (needles, whose thin parts the smoothed copy erodes) the
 // flow stopped by its residual's correlation.
 void test_rigid_motion_invariance()
 {
