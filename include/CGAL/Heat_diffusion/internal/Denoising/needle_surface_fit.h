@@ -137,26 +137,27 @@ inline bool fit_vertices_to_normals_least_squares(const Indexed_mesh& mesh, cons
 // edge^2 its aspect (0.87 for an equilateral triangle): where the median aspect a is
 // below needle_reference_aspect, the normals are mostly noise, and filtering them
 // cannot recover the surface. The needle factor
-// nu = (needle_reference_aspect / a)^2 - 1 (0 on well-shaped meshes) grows with the square of that amplification of the noise
-// of the normals. There the positions are smoothed with the cotangent operator, whose
-// result does not depend on the triangles' shape, for the time
-// needle_smoothing_time nu eps^2 (eps the noise level along the smoothed normals, see plane_fit_noise_level).
+// nu = (needle_reference_aspect / a)^2 - 1 (0 on well-shaped meshes) grows with the
+// square of that amplification of the noise of the normals. There the positions are
+// smoothed with the cotangent operator, whose result does not depend on the triangles'
+// shape, for the time needle_smoothing_time nu eps^2 (eps the noise level along the
+// smoothed normals, see plane_fit_noise_level).
 // From nu = 1 on, a smoothed surface, rescaled to the input's volume, is the result
-// (this one or the flow stopped by its residual, see smooth_needle_mesh()); below, the
-// vertices are fitted to its normals in one least-squares solve
-// anchored to the input (weight needle_fit_anchor_weight), and the normal filter goes
-// on from there. The smoothed surface alone was measured against that fit followed by
-// the filter with the benchmark's seeds, at 0.1, 0.3 and 0.5 mean edge length of noise
-// along the normals: rotor_small 9.29, 17.4, 25.8 degrees against 18.5, 26.1, 32.9;
-// blade 6.65 and 11.2 against 9.71 and 16.5 at 0.3 and 0.5 (at 0.1 it is piecewise
-// flat). The aspect is measured on the pilot surface (the input smoothed for the time
-// of one squared mean edge length), because noise along the normals alone makes
-// well-shaped faces look thin. The constants were chosen on CGAL's needle meshes (blade,
-// rotor_small, anchor) for the fit followed by the filter, and checked not to change
-// the organic ones (elephant, bunny: nu = 0; armadillo: 0 to 0.03). The stop's noise
-// level moves from that of plane_fit_noise_level along the input's normals (nu = 0,
-// unchanged behaviour) to that along the smoothed normals (nu >= 1), which is the
-// better estimate on needles.
+// (this one, the flow stopped by its residual, or their blend: see
+// smooth_needle_mesh()); below, the vertices are fitted to its normals in one
+// least-squares solve anchored to the input (weight needle_fit_anchor_weight), and the
+// normal filter goes on from there. The smoothed surface alone was measured against
+// that fit followed by the filter with the benchmark's seeds, at 0.1, 0.3 and 0.5 mean
+// edge length of noise along the normals: rotor_small 9.29, 17.4, 25.8 degrees against
+// 18.5, 26.1, 32.9; blade 6.65 and 11.2 against 9.71 and 16.5 at 0.3 and 0.5 (at 0.1 it
+// is piecewise flat). The aspect is measured on the pilot surface (the input smoothed
+// for the time of one squared mean edge length), because noise along the normals alone
+// makes well-shaped faces look thin. The constants were chosen on CGAL's needle meshes
+// (blade, rotor_small, anchor) for the fit followed by the filter, and checked not to
+// change the organic ones (elephant, bunny: nu = 0; armadillo: 0 to 0.03). The stop's
+// noise level moves from that of plane_fit_noise_level along the input's normals
+// (nu = 0, unchanged behaviour) to that along the smoothed normals (nu >= 1), which is
+// the better estimate on needles.
 constexpr double needle_reference_aspect = 0.5;
 constexpr double needle_smoothing_time = 2.;
 constexpr double needle_fit_anchor_weight = 0.01;
