@@ -326,6 +326,23 @@ void test_no_collapse()
   }
 }
 
+// What the tests of the smoothing flow start from: a mesh's indexed form, its face
+// adjacency, its noise level along the normals and its cotangent flow.
+struct Flow_setup
+{
+  explicit Flow_setup(const Mesh& mesh)
+      : ncc(mesh), indexed(ncc.indexed_mesh()), adjacency(HD::internal::make_face_adjacency(indexed)),
+        noise(HD::internal::plane_fit_noise_level(indexed, adjacency, indexed.points)), flow(indexed, indexed.points)
+  {
+  }
+
+  const HD::Normal_controlled_coordinates<Mesh> ncc;
+  const HD::internal::Indexed_mesh& indexed;
+  const HD::internal::Face_adjacency adjacency;
+  const double noise;
+  HD::internal::Cotangent_flow flow;
+};
+
 // The weight of the needle copy (needle_copy_weight()): at the stop of the flow, the
 // residual of blade at 0.3 along the normals is correlated by the vertices' sliding
 // along its needles, not along the normals (the copy is taken: weight 1), that of
@@ -342,15 +359,11 @@ void test_needle_copy_weight()
   {
     Mesh noisy = test_support::load<Mesh>(c.file);
     test_support::add_normal_noise(noisy, c.noise, 5);
-    const HD::Normal_controlled_coordinates<Mesh> ncc(noisy);
-    const HD::internal::Indexed_mesh& indexed = ncc.indexed_mesh();
-    const HD::internal::Face_adjacency adjacency = HD::internal::make_face_adjacency(indexed);
-    const double noise = HD::internal::plane_fit_noise_level(indexed, adjacency, indexed.points);
-    HD::internal::Cotangent_flow flow(indexed, indexed.points);
+    Flow_setup setup(noisy);
     std::vector<Eigen::Vector3d> stopped;
     double time = 0;
-    CHECK(HD::internal::smooth_until_residual_is_correlated(indexed, noise, flow, stopped, time));
-    const double weight = HD::internal::needle_copy_weight(indexed, adjacency, stopped);
+    CHECK(HD::internal::smooth_until_residual_is_correlated(setup.indexed, setup.noise, setup.flow, stopped, time));
+    const double weight = HD::internal::needle_copy_weight(setup.indexed, setup.adjacency, stopped);
     std::cout << c.file << ", noise " << c.noise << ": needle copy weight " << weight << std::endl;
     CHECK_MESSAGE(weight == c.weight, c.file << ": needle copy weight " << weight);
   }
@@ -373,9 +386,10 @@ void test_whiteness_stop()
   test_support::add_normal_noise(noisy, 0.3, 5);
   for(const Mesh* mesh : std::vector<const Mesh*>{&noisy, &thin})
   {
-    const HD::Normal_controlled_coordinates<Mesh> ncc(*mesh);
-    const HD::internal::Indexed_mesh& indexed = ncc.indexed_mesh();
+    Flow_setup setup(*mesh);
+    const HD::internal::Indexed_mesh& indexed = setup.indexed;
     const std::vector<Eigen::Vector3d>& input = indexed.points;
+    const double noise = setup.noise;
     const double edge = HD::internal::mean_edge_length(indexed);
     if(mesh == &noisy)
     {
@@ -394,9 +408,8 @@ void test_whiteness_stop()
       // Along the normals: a move of the same length along every unit normal is
       // correlated to 1 whatever moves it adds within the surface; independent noise is
       // white along the normals too.
-      const HD::internal::Face_adjacency input_adjacency = HD::internal::make_face_adjacency(indexed);
       std::vector<Eigen::Vector3d> normals, lifted = perturbed;
-      HD::internal::area_weighted_normals(indexed, input_adjacency, input, normals);
+      HD::internal::area_weighted_normals(indexed, setup.adjacency, input, normals);
       for(std::size_t v = 0; v < input.size(); ++v)
       {
         const Eigen::Vector3d unit = normals[v].normalized();
@@ -409,12 +422,9 @@ void test_whiteness_stop()
           HD::internal::residual_neighbour_correlation(indexed, input, perturbed, &normals);
       CHECK_MESSAGE(std::abs(white_along) < 0.05, "independent noise: along the normals " << white_along);
     }
-    const HD::internal::Face_adjacency adjacency = HD::internal::make_face_adjacency(indexed);
-    const double noise = HD::internal::plane_fit_noise_level(indexed, adjacency, input);
     std::vector<Eigen::Vector3d> smoothed;
     double time = 0;
-    HD::internal::Cotangent_flow flow(indexed, input);
-    CHECK(HD::internal::smooth_until_residual_is_correlated(indexed, noise, flow, smoothed, time));
+    CHECK(HD::internal::smooth_until_residual_is_correlated(indexed, noise, setup.flow, smoothed, time));
     const double correlation = HD::internal::residual_neighbour_correlation(indexed, input, smoothed);
     double largest_move = 0;
     for(std::size_t v = 0; v < input.size(); ++v)
@@ -430,7 +440,7 @@ void test_whiteness_stop()
       Mesh result = noisy;
       for(auto v : result.vertices())
       {
-        const Eigen::Vector3d p = indexed.to_user_frame(smoothed[ncc.vertex_index(v)]);
+        const Eigen::Vector3d p = indexed.to_user_frame(smoothed[setup.ncc.vertex_index(v)]);
         result.point(v) = Epick::Point_3(p.x(), p.y(), p.z());
       }
       const double noisy_mad = mean_angle_deviation(clean, noisy), mad = mean_angle_deviation(clean, result);
@@ -443,7 +453,7 @@ void test_whiteness_stop()
       CHECK(HD::internal::smooth_until_residual_is_correlated(
           indexed, noise,
           [&](double t, std::vector<Eigen::Vector3d>& out) {
-            return t <= 4.001 * noise * noise && flow.smooth(t, HD::internal::flow_substeps, out);
+            return t <= 4.001 * noise * noise && setup.flow.smooth(t, HD::internal::flow_substeps, out);
           },
           limited, limited_time));
       CHECK_MESSAGE(std::abs(limited_time / (noise * noise) - 4) < 1e-12, "failing flow: time " << limited_time);
@@ -625,8 +635,8 @@ void test_scale_invariance()
 // The noise estimate, the weights and the stop rules use no direction and no absolute
 // length: a rotated and translated mesh gives the rotated and translated result.
 // fandisk takes the crease-preserving path, rotor_small (needles) the blend of the
-// needle copy with the flow and its volume rescaling, anchor (needles, whose thin parts the smoothed copy erodes) the
-// flow stopped by its residual's correlation.
+// needle copy with the flow and its volume rescaling, anchor (needles, whose thin parts
+// the smoothed copy erodes) the flow stopped by its residual's correlation.
 void test_rigid_motion_invariance()
 {
   for(const char* file : {"fandisk.off", "rotor_small.off", "anchor.off"})

@@ -18,6 +18,7 @@
 #include <algorithm>
 #include <cmath>
 #include <cstddef>
+#include <type_traits>
 #include <vector>
 
 namespace CGAL {
@@ -157,9 +158,30 @@ inline bool implicit_smoothing(const Indexed_mesh& mesh, const std::vector<Eigen
 // 22.9 with 8, 22.9 with 16; blade at 0.5 along the normals 11.2, 4.60, 4.45, 4.41.
 constexpr std::size_t flow_substeps = 8;
 
-// The correlation of the residual r = p - q of a smoothing between neighbours:
-// sum over the directed edges ij of r_i . r_j / sum of (|r_i|^2 + |r_j|^2) / 2, between
-// -1 and 1. Noise is independent from vertex to vertex: while the flow removes noise, its
+// The sum over the directed edges ij of r_i . r_j over the sum of (|r_i|^2 + |r_j|^2) / 2,
+// for per-vertex residuals r that are vectors or numbers.
+template <typename Residual>
+double neighbour_correlation(const Indexed_mesh& mesh, const std::vector<Residual>& r)
+{
+  auto dot = [](const Residual& a, const Residual& b) {
+    if constexpr(std::is_arithmetic_v<Residual>)
+      return a * b;
+    else
+      return a.dot(b);
+  };
+  double products = 0, squares = 0;
+  for(std::size_t i = 0; i < r.size(); ++i)
+    for(std::size_t k = mesh.fan_begin[i]; k < mesh.fan_begin[i + 1]; ++k)
+    {
+      const std::size_t j = mesh.fan[k];
+      products += dot(r[i], r[j]);
+      squares += 0.5 * (dot(r[i], r[i]) + dot(r[j], r[j]));
+    }
+  return squares > 0 ? products / squares : 0.;
+}
+
+// The correlation of the residual r = p - q of a smoothing between neighbours
+// (neighbour_correlation()), between -1 and 1. Noise is independent from vertex to vertex: while the flow removes noise, its
 // residual is white (a correlation near 0, slightly negative); once it removes shape,
 // which is smooth, the residual turns correlated (towards 1). 0 for equal point sets.
 // With `normals` (per vertex, not necessarily of unit length), the same for the
@@ -169,27 +191,20 @@ inline double residual_neighbour_correlation(const Indexed_mesh& mesh, const std
                                              const std::vector<Eigen::Vector3d>& q,
                                              const std::vector<Eigen::Vector3d>* normals = nullptr)
 {
-  double products = 0, squares = 0;
-  auto add = [&](auto ri, auto rj) {
-    products += ri.dot(rj);
-    squares += 0.5 * (ri.squaredNorm() + rj.squaredNorm());
-  };
-  std::vector<Eigen::Matrix<double, 1, 1> > along(normals != nullptr ? p.size() : 0);
-  for(std::size_t i = 0; i < along.size(); ++i)
+  if(normals == nullptr)
+  {
+    std::vector<Eigen::Vector3d> residual(p.size());
+    for(std::size_t i = 0; i < p.size(); ++i)
+      residual[i] = p[i] - q[i];
+    return neighbour_correlation(mesh, residual);
+  }
+  std::vector<double> along(p.size());
+  for(std::size_t i = 0; i < p.size(); ++i)
   {
     const double length = (*normals)[i].norm();
-    along[i](0) = length > 0 ? (p[i] - q[i]).dot((*normals)[i]) / length : 0.;
+    along[i] = length > 0 ? (p[i] - q[i]).dot((*normals)[i]) / length : 0.;
   }
-  for(std::size_t i = 0; i < p.size(); ++i)
-    for(std::size_t k = mesh.fan_begin[i]; k < mesh.fan_begin[i + 1]; ++k)
-    {
-      const std::size_t j = mesh.fan[k];
-      if(normals != nullptr)
-        add(along[i], along[j]);
-      else
-        add(Eigen::Vector3d(p[i] - q[i]), Eigen::Vector3d(p[j] - q[j]));
-    }
-  return squares > 0 ? products / squares : 0.;
+  return neighbour_correlation(mesh, along);
 }
 
 // The time of the flow. The time that removes the noise and keeps the shape varies by a

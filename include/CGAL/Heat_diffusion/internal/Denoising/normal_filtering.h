@@ -277,11 +277,19 @@ inline std::vector<Eigen::Vector3d> filter_normals(const Indexed_mesh& mesh, con
     }
   };
 
+  if(options.normal_sigma > 0)
+  {
+    run_to_limit(std::vector<double>(mesh.triangles.size(), options.normal_sigma), options.displacement_limit * noise,
+                 false);
+    return points;
+  }
+  // The cotangent flow of the input: one symbolic factorisation for all its smoothings.
+  Cotangent_flow flow(mesh, mesh.points);
   // The result of a normal filter in `points`, or instead, where the filter has eroded
   // the shape (see volume_tolerance), the input smoothed by the cotangent flow until
   // what it removes is no longer white noise (smooth_until_residual_is_correlated()),
   // rescaled to the input's volume (unless the flow fails).
-  auto unless_eroded = [&](Cotangent_flow& flow) {
+  auto unless_eroded = [&]() {
     std::vector<Eigen::Vector3d> smoothed;
     double time = 0;
     if(options.displacement_limit <= erosion_check_limit &&
@@ -292,15 +300,6 @@ inline std::vector<Eigen::Vector3d> filter_normals(const Indexed_mesh& mesh, con
       points.swap(smoothed);
     }
   };
-
-  if(options.normal_sigma > 0)
-  {
-    run_to_limit(std::vector<double>(mesh.triangles.size(), options.normal_sigma), options.displacement_limit * noise,
-                 false);
-    return points;
-  }
-  // The cotangent flow of the input: one symbolic factorisation for all its smoothings.
-  Cotangent_flow flow(mesh, mesh.points);
   const std::vector<double> widths = crease_preserving_widths(mesh, adjacency, noise, flow);
   run_to_limit(widths, options.displacement_limit * noise, true);
   const std::size_t first_phase = done;
@@ -321,7 +320,7 @@ inline std::vector<Eigen::Vector3d> filter_normals(const Indexed_mesh& mesh, con
     for(std::size_t it = first_phase; it < options.iterations; ++it)
       if(!iterate_unless_shrinking(widths, move) || move < 1e-4 * noise)  // shrinking, or converged
         break;
-    unless_eroded(flow);
+    unless_eroded();
     return points;
   }
   // The noise level of the coarse iterations' stop (meshes of needles), without the
@@ -441,7 +440,7 @@ inline std::vector<Eigen::Vector3d> filter_normals(const Indexed_mesh& mesh, con
       relax_tangentially(mesh, adjacency, curved_tangential_weight, points, previous, normals);
     if(needle_weight == 0)
     {
-      unless_eroded(flow);
+      unless_eroded();
       return points;
     }
     small_steps.swap(points);
@@ -451,7 +450,7 @@ inline std::vector<Eigen::Vector3d> filter_normals(const Indexed_mesh& mesh, con
   if(!small_steps.empty())
     for(std::size_t i = 0; i < n; ++i)
       points[i] = needle_weight * points[i] + (1. - needle_weight) * small_steps[i];
-  unless_eroded(flow);
+  unless_eroded();
   return points;
 }
 
