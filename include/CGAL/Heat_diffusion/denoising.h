@@ -10,6 +10,7 @@
 #include <CGAL/Heat_diffusion/parameters.h>
 #include <CGAL/Heat_diffusion/reconstruction.h>
 #include <CGAL/Heat_diffusion/internal/Denoising/normal_filtering.h>
+#include <CGAL/Heat_diffusion/internal/Denoising/self_intersection_repair.h>
 #include <CGAL/Heat_diffusion/internal/Denoising/signature_normals.h>
 #include <CGAL/Heat_diffusion/internal/errors.h>
 
@@ -166,6 +167,16 @@ enum class Denoising_method
 /// shape's detail add in quadrature: the estimate of 1 then measured the shape alone,
 /// as on clean CAD meshes where it reads rounding errors or the facets of a coarse
 /// tessellation).
+/// Last, the faces of the result that intersect each other
+/// (`Polygon_mesh_processing::self_intersections()`, with `geom_traits`) are untangled:
+/// in rounds, the vertices of the intersecting faces are smoothed, by the gentlest of
+/// these steps that removes at least a quarter of the intersecting pairs: one umbrella
+/// step \f$ v_i \leftarrow v_i + 0.5\,(\bar v_i - v_i) \f$ of these vertices alone,
+/// Taubin's pair of steps (0.5 then -0.53), the same two with one ring of neighbours
+/// added. The rounds end when no step does, or after 10. Noise in random directions folds
+/// faces over within the surface (fandisk at 0.5 mean edge length: 479 pairs, 0 after two
+/// rounds); walls closer to each other than the noise are separated only as far as these
+/// steps allow. A mesh that the filter leaves unchanged keeps its own intersections.
 ///
 /// <b>`Denoising_method::signature_diffusion`: the paper's pipeline.</b> Each of the
 /// `number_of_iterations` iterations
@@ -368,14 +379,23 @@ void denoise_mesh(TriangleMesh& tm, const NamedParameters& np = parameters::defa
     options.steps = std::size_t(steps);
     options.normal_sigma = automatic_normal_sigma ? 0. : user_normal_sigma;
     options.displacement_limit = displacement_limit;
-    const std::vector<Eigen::Vector3d> points =
-        internal::filter_normals(ncc.indexed_mesh(), options, internal::Progress(progress));
-    for(vertex_descriptor v : vertices(tm))
-    {
-      const Eigen::Vector3d x = ncc.indexed_mesh().to_user_frame(points[ncc.vertex_index(v)]);
-      if(x.allFinite())
-        put(vpm, v, Point_3(x.x(), x.y(), x.z()));
-    }
+    const internal::Indexed_mesh& indexed = ncc.indexed_mesh();
+    std::vector<Eigen::Vector3d> points = internal::filter_normals(indexed, options, internal::Progress(progress));
+    auto write_back = [&](const std::vector<Eigen::Vector3d>& result) {
+      for(vertex_descriptor v : vertices(tm))
+      {
+        const Eigen::Vector3d x = indexed.to_user_frame(result[ncc.vertex_index(v)]);
+        if(x.allFinite())
+          put(vpm, v, Point_3(x.x(), x.y(), x.z()));
+      }
+    };
+    // A mesh that the filter leaves as it is (a clean one) keeps its own intersections.
+    if(points == indexed.points)
+      write_back(points);
+    else
+      internal::untangle_self_intersections(tm, vpm, gt, indexed,
+                                            [&](vertex_descriptor v) { return ncc.vertex_index(v); }, write_back,
+                                            points);
     return;
   }
 
