@@ -173,7 +173,10 @@ enum class Denoising_method
 /// these steps that removes at least a quarter of the intersecting pairs: one umbrella
 /// step \f$ v_i \leftarrow v_i + 0.5\,(\bar v_i - v_i) \f$ of these vertices alone,
 /// Taubin's pair of steps (0.5 then -0.53), the same two with one ring of neighbours
-/// added. The rounds end when no step does, or after 10. Noise in random directions folds
+/// added (degenerate faces, which `self_intersections()` reports as intersecting
+/// themselves, are not counted). The rounds end when no step does, or after 10. The
+/// closed components are then scaled back to their volumes, unless that makes more faces
+/// intersect (touching parts of an assembly). Noise in random directions folds
 /// faces over within the surface (fandisk at 0.5 mean edge length: 479 pairs, 0 after two
 /// rounds); walls closer to each other than the noise are separated only as far as these
 /// steps allow. A mesh that the filter leaves unchanged keeps its own intersections.
@@ -300,8 +303,11 @@ enum class Denoising_method
 /// smoothing of the widths of 3 and the smoothed copy \f$ P \f$), on meshes of needles one
 /// more (\f$ S \f$), and for \f$ W \f$ (needles with \f$ \nu \geq 1 \f$, eroded thin walls) up
 /// to 10 numerical factorisations of one symbolic analysis (relinearised: up to 30
-/// factorisations), and for \f$ 0 < \nu < 1 \f$ a conjugate gradient solve of 3n unknowns
-/// (see `benchmark_denoising` for times measured against the published filters).
+/// factorisations), and for \f$ 0 < \nu < 1 \f$ a conjugate gradient solve of 3n unknowns;
+/// the untangling finds the intersecting faces once (box intersection, near-linear in n, in
+/// parallel with TBB) and, if there are any, at most 4 times per round and once more
+/// after the rounds (see `benchmark_denoising` for times measured against the published
+/// filters).
 /// Signature diffusion: per iteration, one edge-weighted heat kernel (a sparse Cholesky
 /// factorisation and a Lanczos iteration of \f$ O(n m^2) \f$ dense work: most of the time),
 /// the operator \f$ A_t \f$ (linear in n), k sparse products and one sparse Cholesky
