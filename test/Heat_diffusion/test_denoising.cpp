@@ -390,6 +390,73 @@ void test_untangling()
   }
 }
 
+// The untangling's search after a move covers only the faces near those that moved; it
+// must find the pairs that a search of the whole mesh finds.
+void test_local_intersection_search()
+{
+  const Mesh clean = test_support::load<Mesh>("fandisk.off");
+  Mesh mesh = clean;
+  test_support::add_random_direction_noise(mesh, 0.5, 6);
+  const HD::Normal_controlled_coordinates<Mesh> ncc(mesh);
+  const HD::internal::Indexed_mesh& indexed = ncc.indexed_mesh();
+  std::vector<Eigen::Vector3d> points =
+      HD::internal::filter_normals(indexed, HD::internal::Normal_filtering_options(), HD::internal::Progress());
+  auto vertex_index = [&](Mesh::Vertex_index v) { return ncc.vertex_index(v); };
+  auto write_back = [&](const std::vector<Eigen::Vector3d>& result) {
+    for(auto v : mesh.vertices())
+    {
+      const Eigen::Vector3d p = indexed.to_user_frame(result[ncc.vertex_index(v)]);
+      mesh.point(v) = Epick::Point_3(p.x(), p.y(), p.z());
+    }
+  };
+  typedef HD::internal::Intersecting_face_pairs<Mesh, Mesh::Property_map<Mesh::Vertex_index, Epick::Point_3>, Epick,
+                                                decltype(vertex_index)>
+      Pairs;
+  auto sorted = [](std::vector<Pairs::Face_pair> pairs) {
+    for(auto& pair : pairs)
+      if(pair.second < pair.first)
+        std::swap(pair.first, pair.second);
+    std::sort(pairs.begin(), pairs.end());
+    return pairs;
+  };
+  write_back(points);
+  const std::vector<Eigen::Vector3d> filtered = points;
+  Pairs kept(mesh, mesh.points(), Epick(), vertex_index);
+  const auto first = sorted(kept.update(points));
+  // The vertices of one face of each intersecting pair take one umbrella step; then
+  // they move back. Pairs between a face that moved and one that did not are found
+  // only if the search covers the faces near those that moved.
+  std::vector<unsigned char> marked(points.size(), 0);
+  for(const auto& pair : first)
+    for(const auto v : vertices_around_face(mesh.halfedge(pair.first), mesh))
+      marked[vertex_index(v)] = 1;
+  HD::internal::smooth_marked_vertices(indexed, marked, HD::internal::Untangling_step{0, false}, points);
+  std::size_t moved_faces = 0;
+  for(const auto f : mesh.faces())
+    for(const auto v : vertices_around_face(mesh.halfedge(f), mesh))
+      if(marked[vertex_index(v)])
+      {
+        ++moved_faces;
+        break;
+      }
+  // Under a quarter of the faces: the search after the move is a local one.
+  CHECK_MESSAGE(4 * moved_faces < mesh.number_of_faces(), moved_faces << " faces moved");
+  const std::vector<Eigen::Vector3d>& smoothed = points;
+  for(const std::vector<Eigen::Vector3d>* moved : {&smoothed, &filtered})
+  {
+    const char* move = moved == &smoothed ? "the umbrella step" : "the move back";
+    write_back(*moved);
+    const auto local = sorted(kept.update(*moved));
+    Pairs fresh(mesh, mesh.points(), Epick(), vertex_index);
+    const auto whole = sorted(fresh.update(*moved));
+    std::cout << "fandisk, noise 0.5 in random directions: " << first.size() << " intersecting pairs; after " << move
+              << " (" << moved_faces << " faces), " << local.size() << " found near the moved faces, " << whole.size() << " in the whole mesh"
+              << std::endl;
+    CHECK(local == whole);
+  }
+  CHECK(first.size() > 100);
+}
+
 // What the tests of the smoothing flow start from: a mesh's indexed form, its face
 // adjacency, its noise level along the normals and its cotangent flow.
 struct Flow_setup
@@ -799,6 +866,7 @@ int main()
   test_whiteness_stop();
   test_needle_copy_weight();
   test_untangling();
+  test_local_intersection_search();
   test_component_volume_restoration();
   return test_support::report("test_denoising");
 }

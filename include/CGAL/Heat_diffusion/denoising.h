@@ -304,10 +304,10 @@ enum class Denoising_method
 /// more (\f$ S \f$), and for \f$ W \f$ (needles with \f$ \nu \geq 1 \f$, eroded thin walls) up
 /// to 10 numerical factorisations of one symbolic analysis (relinearised: up to 30
 /// factorisations), and for \f$ 0 < \nu < 1 \f$ a conjugate gradient solve of 3n unknowns;
-/// the untangling finds the intersecting faces once (box intersection, near-linear in n, in
-/// parallel with TBB) and, if there are any, at most 4 times per round and once more
-/// after the rounds (see `benchmark_denoising` for times measured against the published
-/// filters).
+/// the untangling finds the intersecting faces of the whole mesh once (box intersection,
+/// near-linear in n) and, if there are any, at most 4 times per round and once more after
+/// the rounds among the faces near those that moved (see `benchmark_denoising` for times
+/// measured against the published filters).
 /// Signature diffusion: per iteration, one edge-weighted heat kernel (a sparse Cholesky
 /// factorisation and a Lanczos iteration of \f$ O(n m^2) \f$ dense work: most of the time),
 /// the operator \f$ A_t \f$ (linear in n), k sparse products and one sparse Cholesky

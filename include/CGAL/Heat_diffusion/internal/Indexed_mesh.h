@@ -77,6 +77,15 @@ struct Indexed_mesh
   }
 };
 
+// The mean of `values` over the one-ring neighbours of vertex i, which must have some.
+inline Eigen::Vector3d fan_mean(const Indexed_mesh& mesh, const std::vector<Eigen::Vector3d>& values, std::size_t i)
+{
+  Eigen::Vector3d sum = Eigen::Vector3d::Zero();
+  for(std::size_t k = mesh.fan_begin[i]; k < mesh.fan_begin[i + 1]; ++k)
+    sum += values[mesh.fan[k]];
+  return sum / double(mesh.degree(i));
+}
+
 // The number of vertices that `vertices(tm)` lists. `num_vertices()` of a
 // Surface_mesh counts its removed vertices too, until `collect_garbage()`: it is an
 // upper bound on the indices, not the number of vertices.

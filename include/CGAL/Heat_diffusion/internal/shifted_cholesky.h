@@ -16,6 +16,8 @@
 #include <Eigen/CholmodSupport>
 #endif
 
+#include <CGAL/Heat_diffusion/internal/sparse_cholesky.h>
+
 #include <cstring>
 #include <functional>
 #include <sstream>
@@ -73,18 +75,13 @@ public:
   cholmod_common* common() const { return &this->m_cholmod; }
 };
 
-// Simplicial by default: the supernodal factorisation and solves go through BLAS, and
-// with Debian's reference BLAS they were slower.
-// Define to 1 when CHOLMOD is linked against an optimised BLAS.
-#ifndef CGAL_HEAT_DIFFUSION_CHOLMOD_SUPERNODAL
-#define CGAL_HEAT_DIFFUSION_CHOLMOD_SUPERNODAL 0
-#endif
-
 template <typename SparseMatrix>
 class Shifted_cholesky
 {
 public:
   Shifted_cholesky(const SparseMatrix& K, double shift)
+    // Simplicial unless CGAL_HEAT_DIFFUSION_CHOLMOD_SUPERNODAL (see sparse_cholesky.h):
+    // the spectral kernel factorises the coarse level of large meshes.
     : m_llt(CGAL_HEAT_DIFFUSION_CHOLMOD_SUPERNODAL != 0)
   {
     m_llt.compute(K);

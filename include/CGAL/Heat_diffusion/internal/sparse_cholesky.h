@@ -16,20 +16,49 @@ namespace CGAL {
 namespace Heat_diffusion {
 namespace internal {
 
-// The sparse Cholesky factorisation of the package: CHOLMOD's supernodal LLT when
-// the build found SuiteSparse (CGAL_HEAT_DIFFUSION_USE_CHOLMOD, set by the
-// CMake target), Eigen's SimplicialLDLT otherwise. Both read the lower triangle.
+// Define to 1 when CHOLMOD is linked against an optimised BLAS: every factorisation is
+// then supernodal. By default, CHOLMOD's supernodal factorisation (which works through
+// BLAS) is used only for systems of least_supernodal_size unknowns or more, and the
+// simplicial one below that.
+#ifndef CGAL_HEAT_DIFFUSION_CHOLMOD_SUPERNODAL
+#define CGAL_HEAT_DIFFUSION_CHOLMOD_SUPERNODAL 0
+#endif
+
+// The sparse Cholesky factorisation of the package: CHOLMOD's when the build found
+// SuiteSparse (CGAL_HEAT_DIFFUSION_USE_CHOLMOD, set by the CMake target), Eigen's
+// SimplicialLDLT otherwise. Both read the lower triangle.
 #ifdef CGAL_HEAT_DIFFUSION_USE_CHOLMOD
-typedef Eigen::CholmodSupernodalLLT<Eigen::SparseMatrix<double>, Eigen::Lower> Sparse_cholesky;
+typedef Eigen::CholmodDecomposition<Eigen::SparseMatrix<double>, Eigen::Lower> Sparse_cholesky;
 #else
 typedef Eigen::SimplicialLDLT<Eigen::SparseMatrix<double>, Eigen::Lower> Sparse_cholesky;
 #endif
+
+// With Debian's reference BLAS, the supernodal factorisation of the implicit cotangent
+// flow's system M + tL is slower than the simplicial one up to about this size (about
+// two and a half times slower on CAD meshes of ten thousand vertices, even at four
+// hundred thousand) and faster above it (a third faster at 1.6 million).
+constexpr Eigen::Index least_supernodal_size = 400000;
+
+// Chooses the factorisation of `cholesky` for systems of `size` unknowns; called before
+// the first factorisation. Failures are reported through info(), not printed.
+inline void configure_cholesky(Sparse_cholesky& cholesky, Eigen::Index size)
+{
+#ifdef CGAL_HEAT_DIFFUSION_USE_CHOLMOD
+  const bool supernodal = CGAL_HEAT_DIFFUSION_CHOLMOD_SUPERNODAL != 0 || size >= least_supernodal_size;
+  cholesky.setMode(supernodal ? Eigen::CholmodSupernodalLLt : Eigen::CholmodSimplicialLLt);
+  cholesky.cholmod().print = 0;
+#else
+  static_cast<void>(cholesky);
+  static_cast<void>(size);
+#endif
+}
 
 // Factorises the symmetric positive definite `matrix`, or throws std::runtime_error
 // saying which `system` failed.
 inline void factorize_or_throw(Sparse_cholesky& cholesky, const Eigen::SparseMatrix<double>& matrix,
                                const std::string& system)
 {
+  configure_cholesky(cholesky, matrix.rows());
   cholesky.compute(matrix);
   if(cholesky.info() != Eigen::Success)
     throw std::runtime_error("CGAL::Heat_diffusion: the sparse Cholesky factorisation of " + system +

@@ -68,15 +68,6 @@ inline void cotangent_stiffness(const Indexed_mesh& mesh, const std::vector<Eige
     m = (std::max)(m, floor);
 }
 
-inline void silence(Sparse_cholesky& cholesky)
-{
-#ifdef CGAL_HEAT_DIFFUSION_USE_CHOLMOD
-  cholesky.cholmod().print = 0;  // failures are reported through info()
-#else
-  static_cast<void>(cholesky);
-#endif
-}
-
 // The implicit mean curvature flow of a surface with the cotangent operator L and the
 // barycentric masses M of its points p: `steps` steps of time t / steps each,
 // (M + (t / steps) L) x_{k+1} = M x_k from x_0 = p, a smoothing of the positions that
@@ -101,7 +92,7 @@ public:
       masses_[i] = masses[std::size_t(i)];
       start_.row(i) = points[std::size_t(i)].transpose();
     }
-    silence(cholesky_);
+    configure_cholesky(cholesky_, n);
   }
 
   // The flow for `time` in `steps` steps, written to `result`. Returns false, leaving

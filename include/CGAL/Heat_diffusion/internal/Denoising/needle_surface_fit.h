@@ -118,7 +118,7 @@ inline bool fit_vertices_to_normals_least_squares(const Indexed_mesh& mesh, cons
   if(iterative.info() != Eigen::Success || !x.allFinite())
   {
     Sparse_cholesky cholesky;
-    silence(cholesky);
+    configure_cholesky(cholesky, system.rows());
     cholesky.compute(system);
     if(cholesky.info() != Eigen::Success)
       return false;

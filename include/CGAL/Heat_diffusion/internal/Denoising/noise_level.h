@@ -52,13 +52,10 @@ inline double plane_fit_noise_level(const Indexed_mesh& mesh, const Face_adjacen
       if(degree < 3 || (pass == 0 && !mesh.fan_is_closed[i]))
         continue;
       const Eigen::Vector3d& normal = normals[i];
-      Eigen::Vector3d mean = Eigen::Vector3d::Zero();
-      for(std::size_t k = mesh.fan_begin[i]; k < mesh.fan_begin[i + 1]; ++k)
-        mean += points[mesh.fan[k]];
       const double length = normal.norm();
       if(!(length > 0))
         continue;
-      const double d = std::abs(normal.dot(points[i] - mean / double(degree))) / length;
+      const double d = std::abs(normal.dot(points[i] - fan_mean(mesh, points, i))) / length;
       if(std::isfinite(d))
         distances.push_back(d / std::sqrt(1. + 1. / double(degree)));
     }
@@ -89,10 +86,7 @@ inline double second_difference_noise_level(const Indexed_mesh& mesh, const Face
     const std::size_t degree = mesh.degree(i);
     if(degree == 0)
       continue;
-    Eigen::Vector3d mean = Eigen::Vector3d::Zero();
-    for(std::size_t k = mesh.fan_begin[i]; k < mesh.fan_begin[i + 1]; ++k)
-      mean += points[mesh.fan[k]];
-    first[i] = points[i] - mean / double(degree);
+    first[i] = points[i] - fan_mean(mesh, points, i);
   }
   std::vector<Eigen::Vector3d> normals;
   area_weighted_normals(mesh, adjacency, points, normals);

@@ -52,11 +52,8 @@ inline void relax_tangentially(const Indexed_mesh& mesh, const Face_adjacency& a
     const double length = normals[i].norm();
     if(degree < 3 || !mesh.fan_is_closed[i] || !(length > 0))
       return;
-    Eigen::Vector3d mean = Eigen::Vector3d::Zero();
-    for(std::size_t k = mesh.fan_begin[i]; k < mesh.fan_begin[i + 1]; ++k)
-      mean += scratch[mesh.fan[k]];
     const Eigen::Vector3d normal = normals[i] / length;
-    const Eigen::Vector3d move = mean / double(degree) - scratch[i];
+    const Eigen::Vector3d move = fan_mean(mesh, scratch, i) - scratch[i];
     points[i] = scratch[i] + weight * (move - normal * normal.dot(move));
   });
 }

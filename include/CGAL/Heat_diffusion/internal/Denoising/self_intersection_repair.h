@@ -10,12 +10,16 @@
 #include <CGAL/Heat_diffusion/internal/Indexed_mesh.h>
 #include <CGAL/Heat_diffusion/internal/Denoising/volume_preservation.h>
 
+#include <CGAL/Bbox_3.h>
 #include <CGAL/Polygon_mesh_processing/self_intersections.h>
+#include <CGAL/box_intersection_d.h>
 #include <CGAL/boost/graph/helpers.h>
+#include <CGAL/boost/graph/named_params_helper.h>
 #include <CGAL/tags.h>
 
 #include <Eigen/Core>
 
+#include <algorithm>
 #include <cstddef>
 #include <iterator>
 #include <utility>
@@ -34,7 +38,7 @@ namespace internal {
 // while its MAD rose from 46 to 53 degrees; its second round is not kept.
 constexpr double least_untangled_fraction = 0.25;
 
-// Bounds the number of rounds (each finds the intersections of the whole mesh again).
+// Bounds the number of rounds.
 constexpr std::size_t untangling_rounds = 10;
 
 // One round's smoothing of the marked vertices: `rings` rings of neighbours added to
@@ -65,17 +69,140 @@ inline void smooth_marked_vertices(const Indexed_mesh& mesh, std::vector<unsigne
   {
     for(std::size_t i = 0; i < n; ++i)
       if(marked[i] && mesh.degree(i) > 0)
-      {
-        Eigen::Vector3d mean = Eigen::Vector3d::Zero();
-        for(std::size_t k = mesh.fan_begin[i]; k < mesh.fan_begin[i + 1]; ++k)
-          mean += points[mesh.fan[k]];
-        next[i] = points[i] + factor * (mean / double(mesh.degree(i)) - points[i]);
-      }
+        next[i] = points[i] + factor * (fan_mean(mesh, points, i) - points[i]);
     points = next;
     if(!step.taubin)
       break;
   }
 }
+
+// The pairs of faces of `tm` that intersect, as Polygon_mesh_processing::
+// self_intersections() finds them, less the pairs (f, f) by which it reports degenerate
+// faces; kept up to date as the vertices move. The first search covers the whole mesh;
+// the next ones only the faces that moved and those whose boxes overlap theirs. A pair
+// of faces that did not move keeps its status, and a pair with a face that moved is
+// among those searched, so the pairs are always those of a search of the whole mesh,
+// at a cost that follows the size of the tangle rather than the mesh's.
+template <typename TriangleMesh, typename VertexPointMap, typename GeomTraits, typename VertexIndex>
+class Intersecting_face_pairs
+{
+  typedef typename boost::graph_traits<TriangleMesh>::face_descriptor face_descriptor;
+  typedef typename boost::graph_traits<TriangleMesh>::halfedge_descriptor halfedge_descriptor;
+  typedef Box_intersection_d::Box_with_info_d<double, 3, face_descriptor, Box_intersection_d::ID_FROM_BOX_ADDRESS>
+      Box;
+
+public:
+  typedef std::pair<face_descriptor, face_descriptor> Face_pair;
+
+  Intersecting_face_pairs(const TriangleMesh& tm, VertexPointMap vertex_point_map, const GeomTraits& traits,
+                          const VertexIndex& vertex_index)
+    : tm_(tm), vertex_point_map_(vertex_point_map), traits_(traits), vertex_index_(vertex_index),
+      face_index_(get_initialized_face_index_map(tm, parameters::default_values()))
+  {
+    for(const face_descriptor f : faces(tm))
+    {
+      face_index_bound_ = (std::max)(face_index_bound_, std::size_t(get(face_index_, f)) + 1);
+      ++number_of_faces_;
+    }
+  }
+
+  // The intersecting pairs of `tm`, whose vertices are at `points` (indexed by
+  // `vertex_index`; the caller has put them into `tm`).
+  const std::vector<Face_pair>& update(const std::vector<Eigen::Vector3d>& points)
+  {
+    std::vector<face_descriptor> moved;
+    if(searched_points_.size() == points.size())
+      for(const face_descriptor f : faces(tm_))
+        for(const halfedge_descriptor h : halfedges_around_face(halfedge(f, tm_), tm_))
+        {
+          const std::size_t i = vertex_index_(target(h, tm_));
+          if(points[i] != searched_points_[i])
+          {
+            moved.push_back(f);
+            break;
+          }
+        }
+    // A first search, or one after most faces moved, covers the whole mesh.
+    if(searched_points_.size() != points.size() || 4 * moved.size() > number_of_faces_)
+    {
+      pairs_.clear();
+      search(faces(tm_));
+    }
+    else if(!moved.empty())
+    {
+      const std::vector<unsigned char> near = faces_near(moved);
+      std::vector<face_descriptor> searched;
+      for(const face_descriptor f : faces(tm_))
+        if(near[get(face_index_, f)])
+          searched.push_back(f);
+      pairs_.erase(std::remove_if(pairs_.begin(), pairs_.end(),
+                                  [&](const Face_pair& pair) {
+                                    return near[get(face_index_, pair.first)] && near[get(face_index_, pair.second)];
+                                  }),
+                   pairs_.end());
+      search(searched);
+    }
+    searched_points_ = points;
+    return pairs_;
+  }
+
+private:
+  Bbox_3 box(const face_descriptor f) const
+  {
+    Bbox_3 result;
+    for(const halfedge_descriptor h : halfedges_around_face(halfedge(f, tm_), tm_))
+      result += get(vertex_point_map_, target(h, tm_)).bbox();
+    return result;
+  }
+
+  // Flags, by face index, the faces of `moved` and those whose boxes overlap theirs.
+  std::vector<unsigned char> faces_near(const std::vector<face_descriptor>& moved) const
+  {
+    std::vector<Box> moved_boxes, candidates;
+    Bbox_3 around;
+    for(const face_descriptor f : moved)
+    {
+      moved_boxes.emplace_back(box(f), f);
+      around += moved_boxes.back().bbox();
+    }
+    for(const face_descriptor f : faces(tm_))
+    {
+      const Bbox_3 b = box(f);
+      if(do_overlap(b, around))
+        candidates.emplace_back(b, f);
+    }
+    std::vector<unsigned char> near(face_index_bound_, 0);
+    for(const face_descriptor f : moved)
+      near[get(face_index_, f)] = 1;
+    box_intersection_d(moved_boxes.begin(), moved_boxes.end(), candidates.begin(), candidates.end(),
+                       [&](const Box& a, const Box& b) {
+                         near[get(face_index_, a.info())] = 1;
+                         near[get(face_index_, b.info())] = 1;
+                       });
+    return near;
+  }
+
+  template <typename FaceRange>
+  void search(const FaceRange& range)
+  {
+    std::vector<Face_pair> found;
+    Polygon_mesh_processing::self_intersections<Sequential_tag>(
+        range, tm_, std::back_inserter(found),
+        CGAL::parameters::vertex_point_map(vertex_point_map_).geom_traits(traits_));
+    for(const Face_pair& pair : found)
+      if(pair.first != pair.second)
+        pairs_.push_back(pair);
+  }
+
+  const TriangleMesh& tm_;
+  VertexPointMap vertex_point_map_;
+  GeomTraits traits_;
+  const VertexIndex& vertex_index_;
+  typename GetInitializedFaceIndexMap<TriangleMesh, parameters::Default_named_parameters>::const_type face_index_;
+  std::size_t face_index_bound_ = 0, number_of_faces_ = 0;
+  std::vector<Eigen::Vector3d> searched_points_;  // where the vertices were at the last search
+  std::vector<Face_pair> pairs_;
+};
 
 // Untangles the faces of `tm` that intersect each other once its vertices are at
 // `points` (the frame of `mesh`; `write_back(points)` puts them into `tm`, which
@@ -99,28 +226,22 @@ void untangle_self_intersections(const TriangleMesh& tm, VertexPointMap vertex_p
       write_back(points);  // puts the finite ones
       return;
     }
+  Intersecting_face_pairs<TriangleMesh, VertexPointMap, GeomTraits, VertexIndex> intersecting(
+      tm, vertex_point_map, traits, vertex_index);
   std::vector<unsigned char> marked;
   // Puts `points` into `tm` and marks the vertices of its intersecting faces; returns the
-  // number of intersecting pairs. Degenerate faces, which self_intersections() reports
-  // as pairs (f, f), are not counted: the collinear vertices of a CAD export's slivers
-  // are not a tangle, and smoothing them would bend a flat part.
+  // number of intersecting pairs. Degenerate faces are not counted: the collinear
+  // vertices of a CAD export's slivers are not a tangle, and smoothing them would bend a
+  // flat part.
   auto find_intersections = [&]() {
     write_back(points);
-    std::vector<std::pair<face_descriptor, face_descriptor> > pairs;
-    Polygon_mesh_processing::self_intersections<Parallel_if_available_tag>(
-        tm, std::back_inserter(pairs), CGAL::parameters::vertex_point_map(vertex_point_map).geom_traits(traits));
+    const auto& pairs = intersecting.update(points);
     marked.assign(n, 0);
-    std::size_t count = 0;
     for(const auto& pair : pairs)
-    {
-      if(pair.first == pair.second)
-        continue;
-      ++count;
       for(const face_descriptor f : {pair.first, pair.second})
         for(const halfedge_descriptor h : halfedges_around_face(halfedge(f, tm), tm))
           marked[vertex_index(target(h, tm))] = 1;
-    }
-    return count;
+    return pairs.size();
   };
   std::size_t remaining = find_intersections();
   if(remaining == 0)
