@@ -8,9 +8,13 @@
 // runs in a child process so that its peak memory is its own.
 //
 // Usage: benchmark_scale_curve [DATA_DIR] [--min-level L] [--max-level L] [--coarse N] [--time T] [--order]
+//                              [--cholesky]
 //
 // --order also times one diffusion step (a 3-ring operator times a vector) in the
 // vertex order of the mesh and in that of the package (along a Hilbert curve).
+// --cholesky times, instead of the pipeline, CHOLMOD's simplicial and supernodal
+// factorisations of the implicit cotangent flow's system (denoise_mesh()), for the size
+// from which the package uses the supernodal one (least_supernodal_size).
 //
 // At the paper's t = 1 the truncated kernel's peak h_t(j, j) is about m / n, below the
 // threshold tau(1) = 0.005 once n exceeds 30000 or so: every heat region collapses and
@@ -21,6 +25,7 @@
 #include <CGAL/Heat_diffusion/Anisotropic_heat_diffusion.h>
 #include <CGAL/Heat_diffusion/Edge_weighted_heat_kernel.h>
 #include <CGAL/Polygon_mesh_processing/IO/polygon_mesh_io.h>
+#include <CGAL/Heat_diffusion/internal/Denoising/cotangent_flow.h>
 #include <CGAL/Heat_diffusion/internal/parallel_for.h>
 #include <CGAL/Heat_diffusion/multiscale_features.h>
 #include <CGAL/Surface_mesh.h>
@@ -191,8 +196,56 @@ void measure_order(const Mesh& mesh, const HD::Edge_weighted_heat_kernel<Mesh>& 
               1e3 * package_p, mesh_p / package_p);
 }
 
+// --cholesky: the system M + t L of the cotangent flow (t a squared mean edge length)
+// factorised and solved for the three coordinates, each factorisation after its own
+// symbolic analysis; best of 3 runs (1 from a million vertices).
+void measure_cholesky(const Mesh& mesh)
+{
+#ifdef CGAL_HEAT_DIFFUSION_USE_CHOLMOD
+  const HD::internal::Indexed_mesh indexed =
+      HD::internal::make_indexed_mesh(mesh, get(CGAL::vertex_point, mesh), get(CGAL::vertex_index, mesh));
+  Eigen::SparseMatrix<double> stiffness;
+  std::vector<double> masses;
+  HD::internal::cotangent_stiffness(indexed, indexed.points, stiffness, masses);
+  double squared_length = 0;
+  for(const auto& t : indexed.triangles)
+    squared_length += (indexed.points[t[1]] - indexed.points[t[0]]).squaredNorm();
+  squared_length /= double(indexed.triangles.size());
+  Eigen::SparseMatrix<double> system = squared_length * stiffness;
+  for(std::size_t i = 0; i < masses.size(); ++i)
+    system.coeffRef(Eigen::Index(i), Eigen::Index(i)) += masses[i];
+  Eigen::MatrixXd coordinates(system.rows(), 3);
+  for(std::size_t i = 0; i < indexed.points.size(); ++i)
+    coordinates.row(Eigen::Index(i)) = indexed.points[i].transpose();
+  const int runs = system.rows() < 1000000 ? 3 : 1;
+  auto seconds = [&](Eigen::CholmodMode mode) {
+    double best = 1e300;
+    for(int run = 0; run < runs; ++run)
+    {
+      HD::internal::Sparse_cholesky cholesky;
+      cholesky.setMode(mode);
+      cholesky.analyzePattern(system);
+      const auto start = std::chrono::steady_clock::now();
+      cholesky.factorize(system);
+      const Eigen::MatrixXd solution = cholesky.solve(coordinates);
+      best = (std::min)(best, seconds_since(start));
+      if(cholesky.info() != Eigen::Success || !solution.allFinite())
+        std::printf("    the factorisation failed\n");
+    }
+    return best;
+  };
+  const double simplicial = seconds(Eigen::CholmodSimplicialLLt), supernodal = seconds(Eigen::CholmodSupernodalLLt);
+  std::printf("%9zu | %10.3f %10.3f %6.2f | %s\n", mesh.number_of_vertices(), simplicial, supernodal,
+              simplicial / supernodal,
+              system.rows() >= HD::internal::least_supernodal_size ? "supernodal" : "simplicial");
+#else
+  static_cast<void>(mesh);
+  std::printf("--cholesky: the package was built without CHOLMOD\n");
+#endif
+}
+
 // One row of the table: subdivide, then mesh -> kernel -> A_t -> F^10.
-void run_level(const std::string& path, int level, long coarse, double time, bool order)
+void run_level(const std::string& path, int level, long coarse, double time, bool order, bool cholesky)
 {
   Mesh mesh;
   if(!CGAL::IO::read_polygon_mesh(path, mesh))
@@ -202,6 +255,11 @@ void run_level(const std::string& path, int level, long coarse, double time, boo
   }
   if(level > 0)
     CGAL::Subdivision_method_3::Loop_subdivision(mesh, CGAL::parameters::number_of_iterations(level));
+  if(cholesky)
+  {
+    measure_cholesky(mesh);
+    return;
+  }
 
   const auto start = std::chrono::steady_clock::now();
   const double cpu_start = cpu_seconds();
@@ -251,7 +309,7 @@ int main(int argc, char* argv[])
   int min_level = 0, max_level = 3;
   long coarse = -1;  // automatic
   double time = 1.;
-  bool order = false;
+  bool order = false, cholesky = false;
   for(int i = 1; i < argc; ++i)
   {
     const std::string a = argv[i];
@@ -263,31 +321,46 @@ int main(int argc, char* argv[])
       coarse = std::atol(argv[++i]);
     else if(a == "--order")
       order = true;
+    else if(a == "--cholesky")
+      cholesky = true;
     else if(a == "--time" && i + 1 < argc)
       time = std::atof(argv[++i]);
     else
       data = a;
   }
   const std::string path = data + "/armadillo.off";
-  std::printf("Scale curve: armadillo Loop-subdivided; sigma = 1, m = 150, t = %g, NS diffused by k = 10 steps\n", time);
-  std::printf("coarse level: %s; stages as shares of the total (mesh in memory -> features of F^10)\n\n",
-              coarse < 0 ? "automatic (above 100000 vertices: 20000)" : std::to_string(coarse).c_str());
-  std::printf("%9s %8s %8s %7s | %6s %6s %6s %6s %6s %6s %6s | %6s | %8s | %7s %7s | %8s | %s\n", "vertices", "coarse",
-              "total s", "CPU s", "NCC", "simpl", "L,B", "eigen", "ritz", "A_t", "feat.", "GiB", "s/vertex", "region", "coll.",
-              "drift", "features");
+  if(cholesky)
+    std::printf("The cotangent flow's system M + t L (denoise_mesh()): CHOLMOD's numerical factorisation and solve\n"
+                "for three right-hand sides, in seconds (best of 3; 1 from a million vertices); armadillo Loop-subdivided\n\n"
+                "%9s | %10s %10s %6s | %s\n",
+                "vertices", "simplicial", "supernodal", "ratio", "the package's choice");
+  else
+  {
+    std::printf("Scale curve: armadillo Loop-subdivided; sigma = 1, m = 150, t = %g, NS diffused by k = 10 steps\n", time);
+    std::printf("coarse level: %s; stages as shares of the total (mesh in memory -> features of F^10)\n\n",
+                coarse < 0 ? "automatic (above 100000 vertices: 20000)" : std::to_string(coarse).c_str());
+    std::printf("%9s %8s %8s %7s | %6s %6s %6s %6s %6s %6s %6s | %6s | %8s | %7s %7s | %8s | %s\n", "vertices", "coarse",
+                "total s", "CPU s", "NCC", "simpl", "L,B", "eigen", "ritz", "A_t", "feat.", "GiB", "s/vertex", "region", "coll.",
+                "drift", "features");
+  }
   for(int level = min_level; level <= max_level; ++level)
   {
     std::fflush(stdout);  // or the child would print the parent's buffer again
     const pid_t child = fork();
     if(child == 0)
     {
-      run_level(path, level, coarse, time, order);
+      run_level(path, level, coarse, time, order, cholesky);
       std::_Exit(0);
     }
     int status = 0;
     waitpid(child, &status, 0);
     if(!WIFEXITED(status) || WEXITSTATUS(status) != 0)
       std::printf("level %d failed (status %d)\n", level, status);
+  }
+  if(cholesky)
+  {
+    std::printf("\nratio: simplicial / supernodal. Re-run: build/bin/benchmark_scale_curve --cholesky\n");
+    return 0;
   }
   std::printf("\nGiB: peak resident memory of the process for that size (ru_maxrss), subdivision included.\n"
               "feat.: F^10 and its features (detect_multiscale_features, c = 0.8); features: convex/concave.\n"

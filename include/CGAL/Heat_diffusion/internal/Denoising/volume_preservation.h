@@ -103,20 +103,40 @@ inline double largest_volume_change(const Indexed_mesh& mesh, const std::vector<
   return change;
 }
 
+// The largest factor by which restore_component_volumes() changes a component's
+// volume. A component that the smoothing made this much smaller (or larger) has
+// collapsed, not shrunk: scaling it back would blow it up about a centroid that the
+// rounding of its near-zero volume decides (b9_mesh, whose small closed parts the flow
+// flattens, at 0.3 mean edge length of noise along the normals: a vertex was sent 20700
+// mean edge lengths away).
+constexpr double largest_volume_restoration = 8.;
+
 // Scales every closed component of `points` about its centroid so that it encloses the
 // volume that it encloses in `reference`. Mean curvature flow shrinks a closed surface (a
 // sphere of radius r by 2t/r in time t); the scaling undoes the shrinkage on average and
 // changes no face normal. Components whose two volumes are not both non-zero, finite and
-// of the same sign are left as they are.
+// of the same sign, whose volume changed by more than largest_volume_restoration, or
+// whose centroid lies outside their bounding box (the centroid of a solid lies inside
+// its convex hull: one outside is that of a volume near zero) are left as they are.
 inline void restore_component_volumes(const Indexed_mesh& mesh, const std::vector<Eigen::Vector3d>& reference,
                                       std::vector<Eigen::Vector3d>& points)
 {
   const Component_volumes volumes = component_volumes(mesh, reference, points);
-  for(std::size_t v = 0; v < points.size(); ++v)
+  const std::size_t n = points.size();
+  std::vector<Eigen::AlignedBox3d> boxes(n);
+  for(std::size_t v = 0; v < n; ++v)
+    boxes[volumes.component[v]].extend(points[v]);
+  std::vector<double> scales(n, 0.);
+  for(std::size_t c = 0; c < n; ++c)
+    if(const double ratio = volumes.ratio(c); ratio > 0 && ratio <= largest_volume_restoration &&
+                                              ratio >= 1. / largest_volume_restoration &&
+                                              boxes[c].contains(volumes.centroid[c]))
+      scales[c] = std::cbrt(ratio);
+  for(std::size_t v = 0; v < n; ++v)
   {
     const std::size_t c = volumes.component[v];
-    if(const double ratio = volumes.ratio(c); ratio > 0)
-      points[v] = volumes.centroid[c] + std::cbrt(ratio) * (points[v] - volumes.centroid[c]);
+    if(scales[c] > 0)
+      points[v] = volumes.centroid[c] + scales[c] * (points[v] - volumes.centroid[c]);
   }
 }
 
