@@ -8,13 +8,14 @@
 // runs in a child process so that its peak memory is its own.
 //
 // Usage: benchmark_scale_curve [DATA_DIR] [--min-level L] [--max-level L] [--coarse N] [--time T] [--order]
-//                              [--cholesky]
+//                              [--denoising]
 //
 // --order also times one diffusion step (a 3-ring operator times a vector) in the
 // vertex order of the mesh and in that of the package (along a Hilbert curve).
-// --cholesky times, instead of the pipeline, CHOLMOD's simplicial and supernodal
-// factorisations of the implicit cotangent flow's system (denoise_mesh()), for the size
-// from which the package uses the supernodal one (least_supernodal_size).
+// --denoising times, instead of the pipeline, two parts of denoise_mesh(): CHOLMOD's
+// simplicial and supernodal factorisations of the implicit cotangent flow's system (for
+// the size from which the package uses the supernodal one, least_supernodal_size), and
+// PMP's search for intersecting faces, sequential and parallel (the untangling's).
 //
 // At the paper's t = 1 the truncated kernel's peak h_t(j, j) is about m / n, below the
 // threshold tau(1) = 0.005 once n exceeds 30000 or so: every heat region collapses and
@@ -25,6 +26,7 @@
 #include <CGAL/Heat_diffusion/Anisotropic_heat_diffusion.h>
 #include <CGAL/Heat_diffusion/Edge_weighted_heat_kernel.h>
 #include <CGAL/Polygon_mesh_processing/IO/polygon_mesh_io.h>
+#include <CGAL/Polygon_mesh_processing/self_intersections.h>
 #include <CGAL/Heat_diffusion/internal/Denoising/cotangent_flow.h>
 #include <CGAL/Heat_diffusion/internal/parallel_for.h>
 #include <CGAL/Heat_diffusion/multiscale_features.h>
@@ -196,11 +198,26 @@ void measure_order(const Mesh& mesh, const HD::Edge_weighted_heat_kernel<Mesh>& 
               1e3 * package_p, mesh_p / package_p);
 }
 
-// --cholesky: the system M + t L of the cotangent flow (t a squared mean edge length)
+// --denoising: the system M + t L of the cotangent flow (t a squared mean edge length)
 // factorised and solved for the three coordinates, each factorisation after its own
-// symbolic analysis; best of 3 runs (1 from a million vertices).
-void measure_cholesky(const Mesh& mesh)
+// symbolic analysis; then the search for intersecting faces. Best of 3 runs (1 from a
+// million vertices).
+void measure_denoising_parts(const Mesh& mesh)
 {
+  const int runs = mesh.number_of_vertices() < 1000000 ? 3 : 1;
+  auto search_seconds = [&](auto tag) {
+    double best = 1e300;
+    for(int run = 0; run < runs; ++run)
+    {
+      std::vector<std::pair<Mesh::Face_index, Mesh::Face_index> > pairs;
+      const auto start = std::chrono::steady_clock::now();
+      CGAL::Polygon_mesh_processing::self_intersections<decltype(tag)>(mesh, std::back_inserter(pairs));
+      best = (std::min)(best, seconds_since(start));
+    }
+    return best;
+  };
+  const double sequential = search_seconds(CGAL::Sequential_tag()),
+               parallel = search_seconds(CGAL::Parallel_if_available_tag());
 #ifdef CGAL_HEAT_DIFFUSION_USE_CHOLMOD
   const HD::internal::Indexed_mesh indexed =
       HD::internal::make_indexed_mesh(mesh, get(CGAL::vertex_point, mesh), get(CGAL::vertex_index, mesh));
@@ -217,7 +234,6 @@ void measure_cholesky(const Mesh& mesh)
   Eigen::MatrixXd coordinates(system.rows(), 3);
   for(std::size_t i = 0; i < indexed.points.size(); ++i)
     coordinates.row(Eigen::Index(i)) = indexed.points[i].transpose();
-  const int runs = system.rows() < 1000000 ? 3 : 1;
   auto seconds = [&](Eigen::CholmodMode mode) {
     double best = 1e300;
     for(int run = 0; run < runs; ++run)
@@ -235,17 +251,18 @@ void measure_cholesky(const Mesh& mesh)
     return best;
   };
   const double simplicial = seconds(Eigen::CholmodSimplicialLLt), supernodal = seconds(Eigen::CholmodSupernodalLLt);
-  std::printf("%9zu | %10.3f %10.3f %6.2f | %s\n", mesh.number_of_vertices(), simplicial, supernodal,
-              simplicial / supernodal,
-              system.rows() >= HD::internal::least_supernodal_size ? "supernodal" : "simplicial");
+  std::printf("%9zu | %10.3f %10.3f %6.2f %10s | %10.3f %8.3f %6.2f\n", mesh.number_of_vertices(), simplicial,
+              supernodal, simplicial / supernodal,
+              system.rows() >= HD::internal::least_supernodal_size ? "supernodal" : "simplicial", sequential, parallel,
+              parallel / sequential);
 #else
-  static_cast<void>(mesh);
-  std::printf("--cholesky: the package was built without CHOLMOD\n");
+  std::printf("%9zu | %10s %10s %6s %10s | %10.3f %8.3f %6.2f\n", mesh.number_of_vertices(), "-", "-", "-",
+              "no CHOLMOD", sequential, parallel, parallel / sequential);
 #endif
 }
 
 // One row of the table: subdivide, then mesh -> kernel -> A_t -> F^10.
-void run_level(const std::string& path, int level, long coarse, double time, bool order, bool cholesky)
+void run_level(const std::string& path, int level, long coarse, double time, bool order, bool denoising)
 {
   Mesh mesh;
   if(!CGAL::IO::read_polygon_mesh(path, mesh))
@@ -255,9 +272,10 @@ void run_level(const std::string& path, int level, long coarse, double time, boo
   }
   if(level > 0)
     CGAL::Subdivision_method_3::Loop_subdivision(mesh, CGAL::parameters::number_of_iterations(level));
-  if(cholesky)
+  if(denoising)
   {
-    measure_cholesky(mesh);
+    measure_denoising_parts(mesh);
+    std::fflush(stdout);  // the child ends with _Exit, which does not flush
     return;
   }
 
@@ -309,7 +327,7 @@ int main(int argc, char* argv[])
   int min_level = 0, max_level = 3;
   long coarse = -1;  // automatic
   double time = 1.;
-  bool order = false, cholesky = false;
+  bool order = false, denoising = false;
   for(int i = 1; i < argc; ++i)
   {
     const std::string a = argv[i];
@@ -321,19 +339,20 @@ int main(int argc, char* argv[])
       coarse = std::atol(argv[++i]);
     else if(a == "--order")
       order = true;
-    else if(a == "--cholesky")
-      cholesky = true;
+    else if(a == "--denoising")
+      denoising = true;
     else if(a == "--time" && i + 1 < argc)
       time = std::atof(argv[++i]);
     else
       data = a;
   }
   const std::string path = data + "/armadillo.off";
-  if(cholesky)
-    std::printf("The cotangent flow's system M + t L (denoise_mesh()): CHOLMOD's numerical factorisation and solve\n"
-                "for three right-hand sides, in seconds (best of 3; 1 from a million vertices); armadillo Loop-subdivided\n\n"
-                "%9s | %10s %10s %6s | %s\n",
-                "vertices", "simplicial", "supernodal", "ratio", "the package's choice");
+  if(denoising)
+    std::printf("Two parts of denoise_mesh(), in seconds (best of 3; 1 from a million vertices); armadillo Loop-subdivided.\n"
+                "The cotangent flow's system M + t L: CHOLMOD's numerical factorisation and solve for three right-hand\n"
+                "sides; the search for intersecting faces (PMP::self_intersections)\n\n"
+                "%9s | %10s %10s %6s %10s | %10s %8s %6s\n",
+                "vertices", "simplicial", "supernodal", "ratio", "package", "sequential", "parallel", "ratio");
   else
   {
     std::printf("Scale curve: armadillo Loop-subdivided; sigma = 1, m = 150, t = %g, NS diffused by k = 10 steps\n", time);
@@ -349,7 +368,7 @@ int main(int argc, char* argv[])
     const pid_t child = fork();
     if(child == 0)
     {
-      run_level(path, level, coarse, time, order, cholesky);
+      run_level(path, level, coarse, time, order, denoising);
       std::_Exit(0);
     }
     int status = 0;
@@ -357,9 +376,10 @@ int main(int argc, char* argv[])
     if(!WIFEXITED(status) || WEXITSTATUS(status) != 0)
       std::printf("level %d failed (status %d)\n", level, status);
   }
-  if(cholesky)
+  if(denoising)
   {
-    std::printf("\nratio: simplicial / supernodal. Re-run: build/bin/benchmark_scale_curve --cholesky\n");
+    std::printf("\nratios: simplicial / supernodal, parallel / sequential; package: the factorisation that the package\n"
+                "uses at that size. Re-run: build/bin/benchmark_scale_curve --denoising\n");
     return 0;
   }
   std::printf("\nGiB: peak resident memory of the process for that size (ru_maxrss), subdivision included.\n"

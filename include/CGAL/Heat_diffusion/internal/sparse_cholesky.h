@@ -33,10 +33,11 @@ typedef Eigen::CholmodDecomposition<Eigen::SparseMatrix<double>, Eigen::Lower> S
 typedef Eigen::SimplicialLDLT<Eigen::SparseMatrix<double>, Eigen::Lower> Sparse_cholesky;
 #endif
 
-// With Debian's reference BLAS, the supernodal factorisation of the implicit cotangent
-// flow's system M + tL is slower than the simplicial one up to about this size (about
-// two and a half times slower on CAD meshes of ten thousand vertices, even at four
-// hundred thousand) and faster above it (a third faster at 1.6 million).
+// The supernodal factorisation works on dense blocks through BLAS, which pays once the
+// blocks are large. With Debian's reference BLAS the two factorisations of the implicit
+// cotangent flow's system M + tL break even at about this size, the supernodal one
+// slower below it and faster above (`benchmark_scale_curve --cholesky` measures both;
+// the user manual gives the figures).
 constexpr Eigen::Index least_supernodal_size = 400000;
 
 // Chooses the factorisation of `cholesky` for systems of `size` unknowns; called before
