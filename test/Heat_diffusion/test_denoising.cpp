@@ -450,8 +450,8 @@ void test_local_intersection_search()
     Pairs fresh(mesh, mesh.points(), Epick(), vertex_index);
     const auto whole = sorted(fresh.update(*moved));
     std::cout << "fandisk, noise 0.5 in random directions: " << first.size() << " intersecting pairs; after " << move
-              << " (" << moved_faces << " faces), " << local.size() << " found near the moved faces, " << whole.size() << " in the whole mesh"
-              << std::endl;
+              << " (" << moved_faces << " faces), " << local.size() << " found near the moved faces, "
+              << whole.size() << " in the whole mesh" << std::endl;
     CHECK(local == whole);
   }
   CHECK(first.size() > 100);
@@ -607,32 +607,6 @@ void test_whiteness_stop()
 // blobby_3cc has holes): after the flow and a different scaling of each
 // component, each one is brought back to its own volume, its face normals unchanged
 // (a scaling about a point turns no face), and the largest volume change reads 0.
-// b9_mesh has small closed components that the smoothing flattens; the volume
-// restoration must leave them as they are, not blow them up about the centroid of a
-// volume near zero (without its bounds, a vertex goes 20700 mean edge lengths away at
-// 0.3 along the normals; with the supernodal factorisation of earlier versions, 49 at
-// 0.1 in random directions).
-void test_collapsed_components()
-{
-  const Mesh clean = test_support::load<Mesh>("b9_mesh.off");
-  const double edge = test_support::mean_edge_length(clean);
-  for(const bool along_normals : {false, true})
-  {
-    Mesh mesh = clean;
-    if(along_normals)
-      test_support::add_normal_noise(mesh, 0.3, 5);
-    else
-      test_support::add_random_direction_noise(mesh, 0.1, 6);
-    HD::denoise_mesh(mesh);
-    double largest = 0;
-    for(auto v : mesh.vertices())
-      largest = (std::max)(largest, std::sqrt(CGAL::squared_distance(mesh.point(v), clean.point(v))) / edge);
-    std::cout << "b9_mesh, noise " << (along_normals ? "0.3 along the normals" : "0.1 in random directions")
-              << ": largest distance to the clean mesh's vertex " << largest << " mean edge lengths" << std::endl;
-    CHECK_MESSAGE(largest < 5, "b9_mesh: a vertex moved " << largest << " mean edge lengths");
-  }
-}
-
 void test_component_volume_restoration()
 {
   Mesh mesh = test_support::load<Mesh>("fandisk.off");
@@ -679,6 +653,32 @@ void test_component_volume_restoration()
     largest_turn = (std::max)(largest_turn, (a - b).norm());
   }
   CHECK_MESSAGE(largest_turn < 1e-9, "three components: a face turned by " << largest_turn);
+}
+
+// b9_mesh has small closed components that the smoothing flattens; the volume
+// restoration must leave them as they are, not blow them up about the centroid of a
+// volume near zero (without its bounds, a vertex goes 20700 mean edge lengths away at
+// 0.3 along the normals; with the supernodal factorisation of earlier versions, 49 at
+// 0.1 in random directions).
+void test_collapsed_components()
+{
+  const Mesh clean = test_support::load<Mesh>("b9_mesh.off");
+  const double edge = test_support::mean_edge_length(clean);
+  for(const bool along_normals : {false, true})
+  {
+    Mesh mesh = clean;
+    if(along_normals)
+      test_support::add_normal_noise(mesh, 0.3, 5);
+    else
+      test_support::add_random_direction_noise(mesh, 0.1, 6);
+    HD::denoise_mesh(mesh);
+    double largest = 0;
+    for(auto v : mesh.vertices())
+      largest = (std::max)(largest, std::sqrt(CGAL::squared_distance(mesh.point(v), clean.point(v))) / edge);
+    std::cout << "b9_mesh, noise " << (along_normals ? "0.3 along the normals" : "0.1 in random directions")
+              << ": largest distance to the clean mesh's vertex " << largest << " mean edge lengths" << std::endl;
+    CHECK_MESSAGE(largest < 5, "b9_mesh: a vertex moved " << largest << " mean edge lengths");
+  }
 }
 
 // The iterations stop once the vertices have moved as far as the estimated noise
