@@ -500,6 +500,115 @@ void test_needle_copy_weight()
   }
 }
 
+// The matrices of the flow and of the needle fit, assembled in place over the vertices'
+// one-rings (Vertex_block_matrix) and applied face by face (Normal_fit_system), against
+// the textbook assembly from triplets, on blade at 0.3 along the normals (needles) and
+// on a mesh of three components (two fandisks and an elephant): the cotangent stiffness
+// matrix is the triplets' to the bit, symmetric with rows summing to 0; the fit's
+// product and diagonal blocks are those of its assembled matrix, which is the
+// triplets'; the fit (conjugate gradients on the product) solves the assembled system.
+void test_vertex_systems()
+{
+  Mesh blade = test_support::load<Mesh>("blade.off");
+  test_support::add_normal_noise(blade, 0.3, 5);
+  Mesh components = test_support::load<Mesh>("fandisk.off");
+  CGAL::copy_face_graph(test_support::load<Mesh>("elephant.off"), components);
+  CGAL::copy_face_graph(test_support::load<Mesh>("fandisk.off"), components);
+  for(const Mesh* mesh : {&blade, &components})
+  {
+    const HD::Normal_controlled_coordinates<Mesh> ncc(*mesh);
+    const HD::internal::Indexed_mesh& indexed = ncc.indexed_mesh();
+    const std::vector<Eigen::Vector3d>& points = indexed.points;
+    const Eigen::Index n = Eigen::Index(points.size());
+    typedef Eigen::Triplet<double> Triplet;
+
+    Eigen::SparseMatrix<double> stiffness, reference(n, n);
+    std::vector<double> masses;
+    HD::internal::cotangent_stiffness(indexed, points, stiffness, masses);
+    std::vector<Triplet> triplets;
+    for(const auto& t : indexed.triangles)
+      for(int c = 0; c < 3; ++c)
+      {
+        const std::size_t k = t[c], i = t[(c + 1) % 3], j = t[(c + 2) % 3];
+        const Eigen::Vector3d a = points[i] - points[k], b = points[j] - points[k];
+        const double w = 0.5 * a.dot(b) / a.cross(b).norm();
+        triplets.insert(triplets.end(), {Triplet(Eigen::Index(i), Eigen::Index(i), w),
+                                         Triplet(Eigen::Index(j), Eigen::Index(j), w),
+                                         Triplet(Eigen::Index(i), Eigen::Index(j), -w),
+                                         Triplet(Eigen::Index(j), Eigen::Index(i), -w)});
+      }
+    reference.setFromTriplets(triplets.begin(), triplets.end());
+    const double scale = reference.norm();
+    CHECK_MESSAGE((stiffness - reference).norm() == 0, "stiffness: " << (stiffness - reference).norm() / scale);
+    CHECK((stiffness - Eigen::SparseMatrix<double>(stiffness.transpose())).norm() == 0);
+    CHECK((stiffness * Eigen::VectorXd::Ones(n)).lpNorm<Eigen::Infinity>() < 1e-12 * scale);
+
+    // The fit to the normals of the clean-looking copy (the flow of the input), anchored
+    // to the input with the package's weight.
+    std::vector<Eigen::Vector3d> smoothed, normals, centroids, fitted;
+    std::vector<double> areas;
+    CHECK(HD::internal::implicit_smoothing(indexed, points, 4 * HD::internal::mean_edge_length(indexed) *
+                                                                HD::internal::mean_edge_length(indexed),
+                                           smoothed));
+    HD::internal::face_geometry(indexed, smoothed, normals, areas, centroids);
+    const double lambda = HD::internal::needle_fit_anchor_weight;
+    std::vector<double> anchor_areas(indexed.triangles.size()), weights = HD::internal::barycentric_masses(indexed, points);
+    for(double& weight : weights)
+      weight *= lambda;
+    triplets.clear();
+    for(std::size_t f = 0; f < indexed.triangles.size(); ++f)
+    {
+      const auto& t = indexed.triangles[f];
+      anchor_areas[f] = 0.5 * (points[t[1]] - points[t[0]]).cross(points[t[2]] - points[t[0]]).norm();
+      const Eigen::Matrix3d block = anchor_areas[f] * normals[f] * normals[f].transpose();
+      for(int e = 0; e < 3; ++e)
+      {
+        const Eigen::Index i = Eigen::Index(3 * t[e]), j = Eigen::Index(3 * t[(e + 1) % 3]);
+        for(int r = 0; r < 3; ++r)
+          for(int c = 0; c < 3; ++c)
+            triplets.insert(triplets.end(), {Triplet(i + r, i + c, block(r, c)), Triplet(j + r, j + c, block(r, c)),
+                                             Triplet(i + r, j + c, -block(r, c)), Triplet(j + r, i + c, -block(r, c))});
+      }
+    }
+    for(Eigen::Index i = 0; i < 3 * n; ++i)
+      triplets.emplace_back(i, i, weights[std::size_t(i / 3)]);
+    Eigen::SparseMatrix<double> fit_reference(3 * n, 3 * n);
+    fit_reference.setFromTriplets(triplets.begin(), triplets.end());
+    const HD::internal::Normal_fit_system system(indexed, normals, anchor_areas, weights);
+    const Eigen::SparseMatrix<double> assembled = system.assembled();
+    const double fit_scale = fit_reference.norm();
+    CHECK_MESSAGE((assembled - fit_reference).norm() == 0, "fit: " << (assembled - fit_reference).norm() / fit_scale);
+    CGAL::Random random(3);
+    Eigen::VectorXd x(3 * n);
+    for(Eigen::Index i = 0; i < 3 * n; ++i)
+      x[i] = random.get_double(-1, 1);
+    const Eigen::VectorXd product = system * x, assembled_product = assembled * x;
+    const double product_error = (product - assembled_product).norm() / assembled_product.norm();
+    CHECK_MESSAGE(product_error < 1e-14, "fit: product error " << product_error);
+    const std::vector<Eigen::Matrix3d> blocks = system.diagonal_blocks();
+    double block_error = 0;
+    for(Eigen::Index i = 0; i < n; ++i)
+      block_error = (std::max)(block_error, (blocks[std::size_t(i)] -
+                                             Eigen::Matrix3d(assembled.block(3 * i, 3 * i, 3, 3))).norm());
+    CHECK_MESSAGE(block_error < 1e-14 * fit_scale, "fit: diagonal block error " << block_error / fit_scale);
+
+    CHECK(HD::internal::fit_vertices_to_normals_least_squares(indexed, normals, points, lambda, fitted));
+    Eigen::VectorXd rhs(3 * n), solution(3 * n);
+    for(Eigen::Index i = 0; i < n; ++i)
+    {
+      rhs.segment<3>(3 * i) = weights[std::size_t(i)] * points[std::size_t(i)];
+      solution.segment<3>(3 * i) = fitted[std::size_t(i)];
+    }
+    const Eigen::SimplicialLDLT<Eigen::SparseMatrix<double> > direct(assembled);
+    const Eigen::VectorXd exact = direct.solve(rhs);
+    const double residual = (assembled * solution - rhs).norm() / rhs.norm(),
+                 distance = (solution - exact).norm() / exact.norm();
+    std::cout << (mesh == &blade ? "blade, noise 0.3" : "three components") << ": the fit's relative residual "
+              << residual << ", relative distance to the direct solve " << distance << std::endl;
+    CHECK_MESSAGE(residual < 1e-9 && distance < 1e-6, "fit: residual " << residual << ", distance " << distance);
+  }
+}
+
 // The stop of the smoothing flow (smooth_until_residual_is_correlated()): the residual's
 // neighbour correlation is 0 for no change, 1 for a translation, near 0 for independent
 // noise; on a noisy mesh the flow ends where the correlation of its residual is the
@@ -889,6 +998,7 @@ int main()
   test_weak_noise_on_cad();
   test_clean_meshes();
   test_no_collapse();
+  test_vertex_systems();
   test_whiteness_stop();
   test_needle_copy_weight();
   test_untangling();

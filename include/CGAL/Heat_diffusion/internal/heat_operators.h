@@ -7,13 +7,12 @@
 #include <CGAL/Heat_diffusion/internal/Indexed_mesh.h>
 #include <CGAL/Heat_diffusion/internal/ncc_weights.h>
 #include <CGAL/Heat_diffusion/internal/parallel_for.h>
+#include <CGAL/Heat_diffusion/internal/vertex_block_matrix.h>
 
 #include <Eigen/Sparse>
 
 #include <algorithm>
 #include <cmath>
-#include <limits>
-#include <stdexcept>
 #include <utility>
 #include <vector>
 
@@ -71,10 +70,10 @@ inline double canonical_triangle_area(const Indexed_mesh& mesh, std::size_t a, s
 // `target_area`: the total area after rescaling; by default the number of vertices.
 // The coarse level uses the fine mesh's vertex count, so that t keeps its meaning.
 //
-// Both matrices have the pattern of the mesh's edges plus the diagonal: column i lists
-// the fan of v_i. They are written directly in compressed columns, each column by one
-// thread from its fan (parallel, and the same bits on any number of threads), without
-// the triplets and their sort (30 million of them at 1.6M vertices).
+// Both matrices have the one-ring pattern (One_ring_pattern: column i lists v_i and its
+// fan). They are written directly in compressed columns, each column by one thread from
+// its fan (parallel, and the same bits on any number of threads), without the triplets
+// and their sort (30 million of them at 1.6M vertices).
 inline Heat_operators assemble_heat_operators(const Indexed_mesh& mesh, const Ncc_data& data, double sigma,
                                               double target_area = 0.)
 {
@@ -87,40 +86,24 @@ inline Heat_operators assemble_heat_operators(const Indexed_mesh& mesh, const Nc
     total_area += canonical_triangle_area(mesh, t[0], t[1], t[2]);
   ops.area_scale = (target_area > 0 ? target_area : double(n)) / total_area;
 
-  // The rows of column i: its neighbours, sorted and without repetition (two edges
-  // between the same vertices add up, as they would in a sum of triplets), and i.
-  std::vector<std::size_t> rows(mesh.fan);
-  std::vector<std::size_t> column_begin(n + 1, 0);
-  parallel_for(n, [&](std::size_t i) {
-    const auto first = rows.begin() + std::ptrdiff_t(mesh.fan_begin[i]);
-    const auto last = rows.begin() + std::ptrdiff_t(mesh.fan_begin[i + 1]);
-    std::sort(first, last);
-    column_begin[i + 1] = std::size_t(std::unique(first, last) - first) + 1;
-  });
-  for(std::size_t i = 0; i < n; ++i)
-    column_begin[i + 1] += column_begin[i];
-  const std::size_t entries = column_begin[n];
-  if(entries > std::size_t((std::numeric_limits<Storage_index>::max)()))
-    throw std::length_error("CGAL::Heat_diffusion: the mesh has too many edges for the sparse matrices' index type");
+  const One_ring_pattern pattern(mesh);
+  const Eigen::Index entries = checked_number_of_entries(pattern.rows.size());
   for(Eigen::SparseMatrix<double>* matrix : {&ops.stiffness, &ops.mass})
   {
     matrix->resize(Eigen::Index(n), Eigen::Index(n));
-    matrix->resizeNonZeros(Eigen::Index(entries));
+    matrix->resizeNonZeros(entries);
     for(std::size_t i = 0; i <= n; ++i)
-      matrix->outerIndexPtr()[i] = Storage_index(column_begin[i]);
+      matrix->outerIndexPtr()[i] = Storage_index(pattern.begin[i]);
   }
   const double scale = ops.area_scale;
   parallel_for(n, [&](std::size_t i) {
-    const std::size_t begin = column_begin[i], size = column_begin[i + 1] - begin;
+    const std::size_t begin = pattern.begin[i], size = pattern.begin[i + 1] - begin;
     Storage_index* row = ops.stiffness.innerIndexPtr() + begin;
     double* stiffness = ops.stiffness.valuePtr() + begin;
     double* mass = ops.mass.valuePtr() + begin;
-    // the sorted neighbours with i inserted in place
-    const std::size_t* neighbours = rows.data() + mesh.fan_begin[i];
-    const std::size_t self = std::size_t(std::lower_bound(neighbours, neighbours + size - 1, i) - neighbours);
-    std::copy(neighbours, neighbours + self, row);
-    row[self] = Storage_index(i);
-    std::copy(neighbours + self, neighbours + size - 1, row + self + 1);
+    for(std::size_t k = 0; k < size; ++k)
+      row[k] = Storage_index(pattern.rows[begin + k]);
+    const std::size_t self = pattern.place(i, i);
     std::fill(stiffness, stiffness + size, 0.);
     std::fill(mass, mass + size, 0.);
     const auto position = [&](std::size_t j) {

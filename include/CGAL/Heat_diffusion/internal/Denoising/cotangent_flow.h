@@ -10,6 +10,7 @@
 
 #include <CGAL/Heat_diffusion/internal/Indexed_mesh.h>
 #include <CGAL/Heat_diffusion/internal/sparse_cholesky.h>
+#include <CGAL/Heat_diffusion/internal/vertex_block_matrix.h>
 
 #include <Eigen/Core>
 #include <Eigen/Geometry>
@@ -25,23 +26,39 @@ namespace CGAL {
 namespace Heat_diffusion {
 namespace internal {
 
+// The barycentric vertex masses of `points`: a third of the area of each incident
+// triangle. A vertex without area (isolated, or on degenerate faces only) keeps a small
+// mass, so that the systems built on them stay definite and leave it where it is.
+inline std::vector<double> barycentric_masses(const Indexed_mesh& mesh, const std::vector<Eigen::Vector3d>& points)
+{
+  const std::size_t n = points.size();
+  std::vector<double> masses(n, 0.);
+  for(const auto& t : mesh.triangles)
+  {
+    const double area = 0.5 * (points[t[1]] - points[t[0]]).cross(points[t[2]] - points[t[0]]).norm();
+    if(std::isfinite(area))
+      for(int c = 0; c < 3; ++c)
+        masses[t[c]] += area / 3.;
+  }
+  double total = 0;
+  for(double m : masses)
+    total += m;
+  const double floor = n > 0 && total > 0 ? 1e-6 * total / double(n) : 1.;
+  for(double& m : masses)
+    m = (std::max)(m, floor);
+  return masses;
+}
+
 // The cotangent stiffness matrix of `points` (the Dirichlet energy of the piecewise
 // linear interpolant: positive semi-definite whatever the angles, needles included) and
 // the barycentric vertex masses. Corners of a degenerate triangle add nothing.
 inline void cotangent_stiffness(const Indexed_mesh& mesh, const std::vector<Eigen::Vector3d>& points,
                                 Eigen::SparseMatrix<double>& stiffness, std::vector<double>& masses)
 {
-  const std::size_t n = points.size();
-  std::vector<Eigen::Triplet<double> > triplets;
-  triplets.reserve(12 * mesh.triangles.size());
-  masses.assign(n, 0.);
+  Vertex_block_matrix<1> matrix(mesh);
   for(const auto& t : mesh.triangles)
-  {
-    const double area = 0.5 * (points[t[1]] - points[t[0]]).cross(points[t[2]] - points[t[0]]).norm();
     for(int c = 0; c < 3; ++c)
     {
-      if(std::isfinite(area))
-        masses[t[c]] += area / 3.;
       const std::size_t k = t[c], i = t[(c + 1) % 3], j = t[(c + 2) % 3];
       const Eigen::Vector3d a = points[i] - points[k], b = points[j] - points[k];
       const double sine = a.cross(b).norm();
@@ -50,22 +67,13 @@ inline void cotangent_stiffness(const Indexed_mesh& mesh, const std::vector<Eige
       const double w = 0.5 * a.dot(b) / sine;  // half the cotangent of the angle at k
       if(!std::isfinite(w))
         continue;
-      triplets.emplace_back(Eigen::Index(i), Eigen::Index(i), w);
-      triplets.emplace_back(Eigen::Index(j), Eigen::Index(j), w);
-      triplets.emplace_back(Eigen::Index(i), Eigen::Index(j), -w);
-      triplets.emplace_back(Eigen::Index(j), Eigen::Index(i), -w);
+      matrix.at(i, i) += w;
+      matrix.at(j, j) += w;
+      matrix.at(i, j) -= w;
+      matrix.at(j, i) -= w;
     }
-  }
-  stiffness.resize(Eigen::Index(n), Eigen::Index(n));
-  stiffness.setFromTriplets(triplets.begin(), triplets.end());
-  // A vertex without area (isolated, or on degenerate faces only) keeps a small mass,
-  // so that the systems below stay definite and leave it where it is.
-  double total = 0;
-  for(double m : masses)
-    total += m;
-  const double floor = n > 0 && total > 0 ? 1e-6 * total / double(n) : 1.;
-  for(double& m : masses)
-    m = (std::max)(m, floor);
+  stiffness = std::move(matrix.matrix());
+  masses = barycentric_masses(mesh, points);
 }
 
 // The implicit mean curvature flow of a surface with the cotangent operator L and the
@@ -82,16 +90,21 @@ public:
     std::vector<double> masses;
     cotangent_stiffness(mesh, points, stiffness_, masses);
     const Eigen::Index n = Eigen::Index(points.size());
-    mass_matrix_.resize(n, n);
-    mass_matrix_.reserve(Eigen::VectorXi::Constant(n, 1));
     masses_.resize(n);
     start_.resize(n, 3);
     for(Eigen::Index i = 0; i < n; ++i)
     {
-      mass_matrix_.insert(i, i) = masses[std::size_t(i)];
       masses_[i] = masses[std::size_t(i)];
       start_.row(i) = points[std::size_t(i)].transpose();
     }
+    // M + (t / steps) L has the pattern of L, which has every diagonal entry: its values
+    // are written in place for each time, without a new matrix.
+    system_ = stiffness_;
+    diagonal_.resize(std::size_t(n));
+    for(Eigen::Index j = 0; j < n; ++j)
+      for(Eigen::SparseMatrix<double>::InnerIterator it(system_, j); it; ++it)
+        if(it.row() == j)
+          diagonal_[std::size_t(j)] = std::size_t(&it.value() - system_.valuePtr());
     configure_cholesky(cholesky_, n);
   }
 
@@ -101,30 +114,40 @@ public:
   {
     const std::size_t n = std::size_t(start_.rows());
     steps = (std::max)(steps, std::size_t(1));
-    const Eigen::SparseMatrix<double> system = (time / double(steps)) * stiffness_ + mass_matrix_;
+    const double step_time = time / double(steps);
+    const double* stiffness = stiffness_.valuePtr();
+    double* values = system_.valuePtr();
+    for(Eigen::Index k = 0; k < system_.nonZeros(); ++k)
+      values[k] = step_time * stiffness[k];
+    for(std::size_t i = 0; i < n; ++i)
+      values[diagonal_[i]] += masses_[Eigen::Index(i)];
     if(!analyzed_)
     {
-      cholesky_.analyzePattern(system);
+      cholesky_.analyzePattern(system_);
       analyzed_ = true;
     }
-    cholesky_.factorize(system);
+    cholesky_.factorize(system_);
     if(cholesky_.info() != Eigen::Success)
       return false;
-    Eigen::MatrixXd x = start_;
+    x_ = start_;
     for(std::size_t step = 0; step < steps && cholesky_.info() == Eigen::Success; ++step)
-      x = cholesky_.solve(Eigen::MatrixXd(masses_.asDiagonal() * x));
-    if(cholesky_.info() != Eigen::Success || !x.allFinite())
+    {
+      right_side_ = masses_.asDiagonal() * x_;
+      x_ = cholesky_.solve(right_side_);
+    }
+    if(cholesky_.info() != Eigen::Success || !x_.allFinite())
       return false;
     result.resize(n);
     for(std::size_t i = 0; i < n; ++i)
-      result[i] = x.row(Eigen::Index(i)).transpose();
+      result[i] = x_.row(Eigen::Index(i)).transpose();
     return true;
   }
 
 private:
-  Eigen::SparseMatrix<double> stiffness_, mass_matrix_;
+  Eigen::SparseMatrix<double> stiffness_, system_;
+  std::vector<std::size_t> diagonal_;  // the places of the diagonal entries among the values of system_
   Eigen::VectorXd masses_;
-  Eigen::MatrixXd start_;
+  Eigen::MatrixXd start_, x_, right_side_;
   Sparse_cholesky cholesky_;
   bool analyzed_ = false;
 };

@@ -2,9 +2,8 @@
 // SPDX-License-Identifier: LGPL-3.0-or-later
 //
 // The surface the denoising returns or starts from on meshes of needle triangles: the
-// measure of how needle-like the faces are, the copy of such a mesh smoothed by the
-// cotangent flow, and the vertex positions that best fit given face normals in one
-// least-squares solve.
+// measure of how needle-like the faces are and the copy of such a mesh smoothed by the
+// cotangent flow (normal_fit.h fits the vertices to the copy's normals).
 
 #ifndef CGAL_HEAT_DIFFUSION_INTERNAL_DENOISING_NEEDLE_SURFACE_FIT_H
 #define CGAL_HEAT_DIFFUSION_INTERNAL_DENOISING_NEEDLE_SURFACE_FIT_H
@@ -14,12 +13,9 @@
 #include <CGAL/Heat_diffusion/internal/Denoising/noise_level.h>
 #include <CGAL/Heat_diffusion/internal/Denoising/volume_preservation.h>
 #include <CGAL/Heat_diffusion/internal/Indexed_mesh.h>
-#include <CGAL/Heat_diffusion/internal/sparse_cholesky.h>
 
 #include <Eigen/Core>
 #include <Eigen/Geometry>
-#include <Eigen/IterativeLinearSolvers>
-#include <Eigen/Cholesky>
 #include <Eigen/Sparse>
 
 #include <algorithm>
@@ -51,147 +47,6 @@ inline double median_face_aspect(const Indexed_mesh& mesh, const std::vector<Eig
     return 0.;
   std::nth_element(aspects.begin(), aspects.begin() + std::ptrdiff_t(aspects.size() / 2), aspects.end());
   return aspects[aspects.size() / 2];
-}
-
-// The preconditioner of conjugate gradients (an Eigen preconditioner) for a system
-// whose unknowns are the three coordinates of each vertex in turn: the inverses of its
-// 3 x 3 diagonal blocks. The terms n_f n_f^T of the normal fit couple a vertex's
-// coordinates as strongly as its neighbours': the diagonal alone (Jacobi) ignores
-// that, and conjugate gradients take about 1.6 times as many iterations with it
-// (turbine at 0.1 mean edge length of noise: 356 against 217).
-class Vertex_block_preconditioner
-{
-public:
-  Vertex_block_preconditioner() = default;
-  template <typename Matrix>
-  explicit Vertex_block_preconditioner(const Matrix& matrix)
-  {
-    compute(matrix);
-  }
-
-  template <typename Matrix>
-  Vertex_block_preconditioner& analyzePattern(const Matrix&)
-  {
-    return *this;
-  }
-
-  // The blocks of a symmetric positive definite matrix are positive definite; one that
-  // is not numerically (the matrix is not what the fit builds) is left out (identity).
-  template <typename Matrix>
-  Vertex_block_preconditioner& factorize(const Matrix& matrix)
-  {
-    inverses_.assign(std::size_t(matrix.cols() / 3), Eigen::Matrix3d::Zero());
-    for(Eigen::Index column = 0; column < 3 * Eigen::Index(inverses_.size()); ++column)
-      for(typename Matrix::InnerIterator it(matrix, column); it; ++it)
-        if(it.row() / 3 == column / 3)
-          inverses_[std::size_t(column / 3)](it.row() % 3, column % 3) = it.value();
-    for(Eigen::Matrix3d& block : inverses_)
-    {
-      const Eigen::LLT<Eigen::Matrix3d> cholesky(block);
-      const Eigen::Matrix3d inverse = cholesky.solve(Eigen::Matrix3d::Identity());
-      block = cholesky.info() == Eigen::Success && inverse.allFinite() ? inverse : Eigen::Matrix3d::Identity();
-    }
-    return *this;
-  }
-
-  template <typename Matrix>
-  Vertex_block_preconditioner& compute(const Matrix& matrix)
-  {
-    return factorize(matrix);
-  }
-
-  template <typename Vector>
-  Eigen::VectorXd solve(const Vector& b) const
-  {
-    Eigen::VectorXd x = b;
-    for(std::size_t i = 0; i < inverses_.size(); ++i)
-      x.segment<3>(Eigen::Index(3 * i)) = inverses_[i] * b.template segment<3>(Eigen::Index(3 * i));
-    return x;
-  }
-
-  Eigen::ComputationInfo info() const { return Eigen::Success; }
-
-private:
-  std::vector<Eigen::Matrix3d> inverses_;
-};
-
-// The vertex positions that best fit the face normals `normals` in one solve:
-// x = argmin sum_f a_f sum_{edges ij of f} (n_f . (x_j - x_i))^2 + lambda sum_i m_i |x_i - y_i|^2,
-// a_f the areas and m_i the barycentric masses of `anchors` (y), a sparse symmetric
-// positive definite system of 3n unknowns. The explicit update of Sun et al. moves a
-// vertex by a fraction of its faces' misfit per step, and needs hundreds of steps where
-// the faces are needles; the solve fits all the faces at once. The anchors hold the
-// tangential positions, which the normals leave free, and the scale. Both terms are
-// lengths to the fourth power: lambda has no unit. Returns false, leaving `points`
-// untouched, if neither the iterative solve nor the factorisation succeeds.
-inline bool fit_vertices_to_normals_least_squares(const Indexed_mesh& mesh, const std::vector<Eigen::Vector3d>& normals,
-                                                  const std::vector<Eigen::Vector3d>& anchors, double lambda,
-                                                  std::vector<Eigen::Vector3d>& points)
-{
-  const std::size_t n = anchors.size();
-  Eigen::SparseMatrix<double> unused;
-  std::vector<double> masses;
-  cotangent_stiffness(mesh, anchors, unused, masses);
-  std::vector<Eigen::Triplet<double> > triplets;
-  triplets.reserve(mesh.triangles.size() * 3 * 36 + 3 * n);
-  for(std::size_t f = 0; f < mesh.triangles.size(); ++f)
-  {
-    const auto& t = mesh.triangles[f];
-    const double area = 0.5 * (anchors[t[1]] - anchors[t[0]]).cross(anchors[t[2]] - anchors[t[0]]).norm();
-    if(!(area > 0) || !std::isfinite(area))
-      continue;
-    const Eigen::Matrix3d block = area * normals[f] * normals[f].transpose();
-    for(int e = 0; e < 3; ++e)
-    {
-      const Eigen::Index i = Eigen::Index(3 * t[e]), j = Eigen::Index(3 * t[(e + 1) % 3]);
-      for(int r = 0; r < 3; ++r)
-        for(int c = 0; c < 3; ++c)
-        {
-          triplets.emplace_back(i + r, i + c, block(r, c));
-          triplets.emplace_back(j + r, j + c, block(r, c));
-          triplets.emplace_back(i + r, j + c, -block(r, c));
-          triplets.emplace_back(j + r, i + c, -block(r, c));
-        }
-    }
-  }
-  Eigen::VectorXd rhs(Eigen::Index(3 * n));
-  for(std::size_t i = 0; i < n; ++i)
-    for(int r = 0; r < 3; ++r)
-    {
-      triplets.emplace_back(Eigen::Index(3 * i + r), Eigen::Index(3 * i + r), lambda * masses[i]);
-      rhs[Eigen::Index(3 * i + r)] = lambda * masses[i] * anchors[i][r];
-    }
-  Eigen::SparseMatrix<double> system{Eigen::Index(3 * n), Eigen::Index(3 * n)};
-  system.setFromTriplets(triplets.begin(), triplets.end());
-  // Conjugate gradients from the anchors, to a relative residual of 1e-10: a few hundred
-  // sparse products on CGAL's needle meshes, cheaper than the sparse Cholesky
-  // factorisation of this 3n system (its fill-in is large), with the same MAD to four
-  // digits there; the factorisation if they do not converge.
-  Eigen::VectorXd x(Eigen::Index(3 * n));
-  for(std::size_t i = 0; i < n; ++i)
-    x.segment<3>(Eigen::Index(3 * i)) = anchors[i];
-  Eigen::ConjugateGradient<Eigen::SparseMatrix<double>, Eigen::Lower | Eigen::Upper, Vertex_block_preconditioner>
-      iterative;
-  iterative.setTolerance(1e-10);
-  iterative.setMaxIterations(Eigen::Index(2000));
-  iterative.compute(system);
-  if(iterative.info() == Eigen::Success)
-    x = iterative.solveWithGuess(rhs, Eigen::VectorXd(x));
-  if(iterative.info() != Eigen::Success || !x.allFinite())
-  {
-    Sparse_cholesky cholesky;
-    configure_cholesky(cholesky, system.rows());
-    cholesky.compute(system);
-    if(cholesky.info() != Eigen::Success)
-      return false;
-    x = cholesky.solve(rhs);
-    if(cholesky.info() != Eigen::Success || !x.allFinite())
-      return false;
-  }
-  points.resize(n);
-  for(std::size_t i = 0; i < n; ++i)
-    points[i] = x.segment<3>(Eigen::Index(3 * i));
-  return true;
 }
 
 // Needle meshes (curved surfaces only). A face's normal moves by about the noise over

@@ -13,17 +13,16 @@
 #include <CGAL/Heat_diffusion/internal/Denoising/face_adjacency.h>
 #include <CGAL/Heat_diffusion/internal/Denoising/needle_surface_fit.h>
 #include <CGAL/Heat_diffusion/internal/Denoising/noise_level.h>
+#include <CGAL/Heat_diffusion/internal/Denoising/normal_fit.h>
 #include <CGAL/Heat_diffusion/internal/Denoising/normal_widths.h>
 #include <CGAL/Heat_diffusion/internal/Denoising/shrinkage_stop.h>
 #include <CGAL/Heat_diffusion/internal/Denoising/volume_preservation.h>
 #include <CGAL/Heat_diffusion/internal/Indexed_mesh.h>
 #include <CGAL/Heat_diffusion/internal/parallel_for.h>
 #include <CGAL/Heat_diffusion/internal/progress.h>
-#include <CGAL/Heat_diffusion/internal/sparse_cholesky.h>
 
 #include <Eigen/Core>
 #include <Eigen/Geometry>
-#include <Eigen/IterativeLinearSolvers>
 #include <Eigen/Sparse>
 
 #include <algorithm>

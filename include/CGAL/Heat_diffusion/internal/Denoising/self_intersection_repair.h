@@ -199,7 +199,7 @@ private:
   const TriangleMesh& tm_;
   VertexPointMap vertex_point_map_;
   GeomTraits traits_;
-  const VertexIndex& vertex_index_;
+  VertexIndex vertex_index_;  // a copy: a temporary callable may be passed
   typename GetInitializedFaceIndexMap<TriangleMesh, parameters::Default_named_parameters>::const_type face_index_;
   std::size_t face_index_bound_ = 0, number_of_faces_ = 0;
   std::vector<Eigen::Vector3d> searched_points_;  // where the vertices were at the last search
