@@ -270,6 +270,9 @@ std::vector<Corpus_case> corpus()
       // rejected by the package, with a message that names the element
       {"quad_faces.off", true, "face 0 has 4 vertices"},
       {"zero_area.off", true, "face 0 (vertices 0, 1, 2) has zero area"},
+      // a needle whose corners 0 and 3 are one unit in the last place apart (a fuzzing
+      // find: the NCC of vertex 3 was NaN)
+      {"rounding_collinear_face.off", true, "face 2 (vertices 0, 3, 2) has zero area up to rounding"},
       {"isolated_vertex.off", true, "vertex 4 is isolated"},
       {"pillow.off", true, "vertex 0 has no usable normal"},
       // rejected by CGAL's reader (not a manifold mesh, or not a valid OFF file)

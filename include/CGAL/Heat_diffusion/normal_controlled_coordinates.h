@@ -105,7 +105,7 @@ public:
   /// \cgalNamedParamsEnd
   ///
   /// \throws std::invalid_argument if `tm` has a face that is not a triangle, a face of
-  ///   zero area, an isolated or non-manifold vertex, a non-finite coordinate, or a
+  ///   zero area (or of corners collinear up to rounding), an isolated or non-manifold vertex, a non-finite coordinate, or a
   ///   vertex without a usable normal; the message names the element.
   ///
   /// Complexity: linear in the size of `tm` (parallel over vertices with TBB).
