@@ -506,7 +506,8 @@ void test_needle_copy_weight()
 // on a mesh of three components (two fandisks and an elephant): the cotangent stiffness
 // matrix is the triplets' to the bit, symmetric with rows summing to 0; the fit's
 // product and diagonal blocks are those of its assembled matrix, which is the
-// triplets'; the fit (conjugate gradients on the product) solves the assembled system.
+// triplets'; the fit (conjugate gradients on the product) solves the assembled system;
+// a restarted flow is the flow of its new points.
 void test_vertex_systems()
 {
   Mesh blade = test_support::load<Mesh>("blade.off");
@@ -547,9 +548,17 @@ void test_vertex_systems()
     // to the input with the package's weight.
     std::vector<Eigen::Vector3d> smoothed, normals, centroids, fitted;
     std::vector<double> areas;
-    CHECK(HD::internal::implicit_smoothing(indexed, points, 4 * HD::internal::mean_edge_length(indexed) *
-                                                                HD::internal::mean_edge_length(indexed),
-                                           smoothed));
+    const double time = 4 * std::pow(HD::internal::mean_edge_length(indexed), 2);
+    CHECK(HD::internal::implicit_smoothing(indexed, points, time, smoothed));
+    // A flow restarted from other points is the flow of those points, to the bit (the
+    // relinearised flow restarts one flow for each of its steps).
+    {
+      HD::internal::Cotangent_flow restarted(indexed, smoothed);
+      restarted.restart(points);
+      std::vector<Eigen::Vector3d> again;
+      CHECK(restarted.smooth(time, 1, again));
+      CHECK(again == smoothed);
+    }
     HD::internal::face_geometry(indexed, smoothed, normals, areas, centroids);
     const double lambda = HD::internal::needle_fit_anchor_weight;
     std::vector<double> anchor_areas(indexed.triangles.size()), weights = HD::internal::barycentric_masses(indexed, points);

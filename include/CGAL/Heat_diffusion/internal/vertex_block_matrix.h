@@ -111,15 +111,21 @@ public:
       }
     }
     outer[size] = Storage_index(entries);
-    std::fill(matrix_.valuePtr(), matrix_.valuePtr() + entries, 0.);
+    set_zero();
   }
 
-  // The entry (r, c) of the block of rows of vertex i and columns of vertex j, a
-  // neighbour of i or i itself.
-  double& at(std::size_t i, std::size_t j, int r = 0, int c = 0)
+  // The place among the matrix's values of the entry (r, c) of the block of rows of
+  // vertex i and columns of vertex j, a neighbour of i or i itself.
+  std::size_t place(std::size_t i, std::size_t j, int r = 0, int c = 0) const
   {
-    return matrix_.valuePtr()[matrix_.outerIndexPtr()[BlockSize * j + c] + BlockSize * pattern_.place(i, j) + r];
+    return std::size_t(matrix_.outerIndexPtr()[BlockSize * j + c]) + BlockSize * pattern_.place(i, j) + r;
   }
+
+  // That entry.
+  double& at(std::size_t i, std::size_t j, int r = 0, int c = 0) { return matrix_.valuePtr()[place(i, j, r, c)]; }
+
+  // Every value 0, the pattern kept (to write new values in place).
+  void set_zero() { std::fill(matrix_.valuePtr(), matrix_.valuePtr() + matrix_.nonZeros(), 0.); }
 
   // Adds `block` (BlockSize x BlockSize) to the block of rows of vertex i and columns of
   // vertex j, a neighbour of i or i itself.
@@ -135,6 +141,7 @@ public:
   }
 
   Eigen::SparseMatrix<double>& matrix() { return matrix_; }
+  const Eigen::SparseMatrix<double>& matrix() const { return matrix_; }
 
 private:
   One_ring_pattern pattern_;

@@ -49,13 +49,12 @@ inline std::vector<double> barycentric_masses(const Indexed_mesh& mesh, const st
   return masses;
 }
 
-// The cotangent stiffness matrix of `points` (the Dirichlet energy of the piecewise
-// linear interpolant: positive semi-definite whatever the angles, needles included) and
-// the barycentric vertex masses. Corners of a degenerate triangle add nothing.
-inline void cotangent_stiffness(const Indexed_mesh& mesh, const std::vector<Eigen::Vector3d>& points,
-                                Eigen::SparseMatrix<double>& stiffness, std::vector<double>& masses)
+// Adds the cotangent stiffness matrix of `points` (the Dirichlet energy of the piecewise
+// linear interpolant: positive semi-definite whatever the angles, needles included) to
+// `matrix`. Corners of a degenerate triangle add nothing.
+inline void add_cotangent_stiffness(const Indexed_mesh& mesh, const std::vector<Eigen::Vector3d>& points,
+                                    Vertex_block_matrix<1>& matrix)
 {
-  Vertex_block_matrix<1> matrix(mesh);
   for(const auto& t : mesh.triangles)
     for(int c = 0; c < 3; ++c)
     {
@@ -72,6 +71,14 @@ inline void cotangent_stiffness(const Indexed_mesh& mesh, const std::vector<Eige
       matrix.at(i, j) -= w;
       matrix.at(j, i) -= w;
     }
+}
+
+// The cotangent stiffness matrix of `points` (see above) and their barycentric masses.
+inline void cotangent_stiffness(const Indexed_mesh& mesh, const std::vector<Eigen::Vector3d>& points,
+                                Eigen::SparseMatrix<double>& stiffness, std::vector<double>& masses)
+{
+  Vertex_block_matrix<1> matrix(mesh);
+  add_cotangent_stiffness(mesh, points, matrix);
   stiffness = std::move(matrix.matrix());
   masses = barycentric_masses(mesh, points);
 }
@@ -81,14 +88,32 @@ inline void cotangent_stiffness(const Indexed_mesh& mesh, const std::vector<Eige
 // (M + (t / steps) L) x_{k+1} = M x_k from x_0 = p, a smoothing of the positions that
 // does not depend on the shape of the triangles (the operator converges to the
 // Laplace-Beltrami operator on needles as on well-shaped triangles). One factorisation
-// serves all the steps of a time, and the ordering of the first serves all the times.
+// serves all the steps of a time, and the ordering of the first serves all the times
+// and all the points of the mesh (restart()).
 class Cotangent_flow
 {
 public:
   Cotangent_flow(const Indexed_mesh& mesh, const std::vector<Eigen::Vector3d>& points)
+    : mesh_(mesh), stiffness_(mesh)
   {
-    std::vector<double> masses;
-    cotangent_stiffness(mesh, points, stiffness_, masses);
+    const std::size_t n = points.size();
+    // M + (t / steps) L has the pattern of L, which has every diagonal entry: its values
+    // are written in place for each time, without a new matrix.
+    system_ = stiffness_.matrix();
+    diagonal_.resize(n);
+    for(std::size_t i = 0; i < n; ++i)
+      diagonal_[i] = stiffness_.place(i, i);
+    configure_cholesky(cholesky_, Eigen::Index(n));
+    restart(points);
+  }
+
+  // The flow from `points`, other positions of the mesh's vertices: the operator of
+  // `points` replaces the previous one, on the same pattern and with the same ordering.
+  void restart(const std::vector<Eigen::Vector3d>& points)
+  {
+    stiffness_.set_zero();
+    add_cotangent_stiffness(mesh_, points, stiffness_);
+    const std::vector<double> masses = barycentric_masses(mesh_, points);
     const Eigen::Index n = Eigen::Index(points.size());
     masses_.resize(n);
     start_.resize(n, 3);
@@ -97,15 +122,6 @@ public:
       masses_[i] = masses[std::size_t(i)];
       start_.row(i) = points[std::size_t(i)].transpose();
     }
-    // M + (t / steps) L has the pattern of L, which has every diagonal entry: its values
-    // are written in place for each time, without a new matrix.
-    system_ = stiffness_;
-    diagonal_.resize(std::size_t(n));
-    for(Eigen::Index j = 0; j < n; ++j)
-      for(Eigen::SparseMatrix<double>::InnerIterator it(system_, j); it; ++it)
-        if(it.row() == j)
-          diagonal_[std::size_t(j)] = std::size_t(&it.value() - system_.valuePtr());
-    configure_cholesky(cholesky_, n);
   }
 
   // The flow for `time` in `steps` steps, written to `result`. Returns false, leaving
@@ -115,7 +131,7 @@ public:
     const std::size_t n = std::size_t(start_.rows());
     steps = (std::max)(steps, std::size_t(1));
     const double step_time = time / double(steps);
-    const double* stiffness = stiffness_.valuePtr();
+    const double* stiffness = stiffness_.matrix().valuePtr();
     double* values = system_.valuePtr();
     for(Eigen::Index k = 0; k < system_.nonZeros(); ++k)
       values[k] = step_time * stiffness[k];
@@ -144,8 +160,10 @@ public:
   }
 
 private:
-  Eigen::SparseMatrix<double> stiffness_, system_;
-  std::vector<std::size_t> diagonal_;  // the places of the diagonal entries among the values of system_
+  const Indexed_mesh& mesh_;
+  Vertex_block_matrix<1> stiffness_;
+  Eigen::SparseMatrix<double> system_;  // M + (t / steps) L, on the pattern of stiffness_
+  std::vector<std::size_t> diagonal_;   // the places of the diagonal entries among the values
   Eigen::VectorXd masses_;
   Eigen::MatrixXd start_, x_, right_side_;
   Sparse_cholesky cholesky_;
@@ -263,9 +281,10 @@ constexpr std::size_t relinearised_steps = 3;
 // The relinearised flow: `steps` implicit steps of time t / steps, each with the
 // operator of the points it starts from (the semi-implicit mean curvature flow of
 // Desbrun et al. 1999), instead of the operator of the input for all of them. `flow` is
-// the flow of the points it starts from, which takes the first step. Returns false,
-// leaving `result` untouched, if a factorisation or a solve fails.
-inline bool relinearised_smoothing(const Indexed_mesh& mesh, Cotangent_flow& flow, double time, std::size_t steps,
+// the flow of the points it starts from, which takes the first step; `later_steps`, a
+// flow of the same mesh, is restarted for each of the others. Returns false, leaving
+// `result` untouched, if a factorisation or a solve fails.
+inline bool relinearised_smoothing(Cotangent_flow& flow, Cotangent_flow& later_steps, double time, std::size_t steps,
                                    std::vector<Eigen::Vector3d>& result)
 {
   steps = (std::max)(steps, std::size_t(1));
@@ -274,7 +293,8 @@ inline bool relinearised_smoothing(const Indexed_mesh& mesh, Cotangent_flow& flo
     return false;
   for(std::size_t step = 1; step < steps; ++step)
   {
-    if(!implicit_smoothing(mesh, current, time / double(steps), next))
+    later_steps.restart(current);
+    if(!later_steps.smooth(time / double(steps), 1, next))
       return false;
     current.swap(next);
   }
@@ -360,10 +380,11 @@ inline bool smooth_relinearised_until_residual_is_correlated(const Indexed_mesh&
                                                              Cotangent_flow& flow,
                                                              std::vector<Eigen::Vector3d>& result, double& time)
 {
+  Cotangent_flow later_steps(mesh, mesh.points);
   return smooth_until_residual_is_correlated(
       mesh, noise,
       [&](double t, std::vector<Eigen::Vector3d>& smoothed) {
-        return relinearised_smoothing(mesh, flow, t, relinearised_steps, smoothed);
+        return relinearised_smoothing(flow, later_steps, t, relinearised_steps, smoothed);
       },
       result, time);
 }
