@@ -5,8 +5,8 @@
 // (compared with the pre-check and CGAL's reader), the tool's reading path
 // (check_off_stream, CGAL's polygon soup reader, repair, orientation, triangulation)
 // and the API user's (CGAL::IO::read_OFF into a Surface_mesh), then NCC, the
-// reconstruction, a small heat kernel (m <= 10), diffusion and feature detection,
-// with parameters drawn from the input.
+// reconstruction, the default denoising, a small heat kernel (m <= 10), diffusion and
+// feature detection, with parameters drawn from the input.
 //
 // Fine: std::invalid_argument and std::runtime_error from the package (and any
 // std::exception from CGAL's reading and repair, which the tool reports as bad input).
@@ -20,6 +20,7 @@
 
 #include <CGAL/Heat_diffusion/Anisotropic_heat_diffusion.h>
 #include <CGAL/Heat_diffusion/Edge_weighted_heat_kernel.h>
+#include <CGAL/Heat_diffusion/denoising.h>
 #include <CGAL/Heat_diffusion/multiscale_features.h>
 #include <CGAL/Heat_diffusion/normal_controlled_coordinates.h>
 #include <CGAL/Heat_diffusion/reconstruction.h>
@@ -120,6 +121,26 @@ void run_package(const Mesh& mesh, const Parameters& p)
         }
       }
       catch(const std::runtime_error&)  // a singular system is reported, not an error here
+      {
+      }
+    }
+
+    {
+      Mesh copy = mesh;
+      try
+      {
+        HD::denoise_mesh(copy);
+        for(Vertex v : copy.vertices())
+        {
+          const auto& q = copy.point(v);
+          require(std::isfinite(q.x()) && std::isfinite(q.y()) && std::isfinite(q.z()),
+                  "denoised position not finite");
+        }
+      }
+      catch(const std::invalid_argument&)  // documented: a degenerate iteration of the signature diffusion
+      {
+      }
+      catch(const std::runtime_error&)  // documented: a failed factorisation
       {
       }
     }
