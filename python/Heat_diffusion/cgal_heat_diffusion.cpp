@@ -415,12 +415,42 @@ struct Diffusion_options
   HD::Operator_normalization normalization = HD::Operator_normalization::balanced;
 };
 
+// A Python or numpy integer (anything with __index__ but a bool or an array of one or
+// more dimensions, which numpy also gives __index__).
+bool is_whole_number(const py::handle& value)
+{
+  if(py::isinstance<py::bool_>(value) || !PyIndex_Check(value.ptr()))
+    return false;
+  return !py::isinstance<py::array>(value) || py::reinterpret_borrow<py::array>(value).ndim() == 0;
+}
+
+// The value of a whole number (is_whole_number()), with a ValueError that names it if it
+// does not fit a long long.
+long long whole_number_value(const py::handle& value, const std::string& function, const std::string& name)
+{
+  PyObject* index = PyNumber_Index(value.ptr());
+  if(index == nullptr)
+  {
+    PyErr_Clear();
+    invalid(function, name + " must be a whole number, not " + type_name(value));
+  }
+  const py::object number = py::reinterpret_steal<py::object>(index);
+  try
+  {
+    return number.cast<long long>();
+  }
+  catch(const py::cast_error&)
+  {
+    invalid(function, name + " is out of range: " + std::string(py::str(number)));
+  }
+}
+
 // An optional whole-number argument (None: not given), with a ValueError that names it.
 long long whole_number(const py::object& value, const std::string& function, const std::string& name)
 {
-  if(py::isinstance<py::bool_>(value) || !PyIndex_Check(value.ptr()))
+  if(!is_whole_number(value))
     invalid(function, name + " must be a whole number or None, not " + type_name(value));
-  return py::reinterpret_steal<py::object>(PyNumber_Index(value.ptr())).cast<long long>();
+  return whole_number_value(value, function, name);
 }
 
 std::vector<double> number_list(const py::object& value, const std::string& function, const std::string& name)
@@ -528,18 +558,17 @@ py::array_t<double> to_input_order(const Indexed& indexed, const Mesh& mesh, con
 
 std::vector<std::size_t> step_list(const py::object& steps, const std::string& function, bool& single)
 {
-  // Python and numpy integers (anything with __index__), not bools or floats.
-  auto is_integer = [](const py::handle& s) { return !py::isinstance<py::bool_>(s) && PyIndex_Check(s.ptr()); };
+  // Python and numpy integers (is_whole_number()), or a sequence or array of them.
   auto checked = [&](const py::handle& s) {
-    if(!is_integer(s))
+    if(!is_whole_number(s))
       invalid(function, "steps must be a whole number or a list of them, not " + type_name(s));
-    const long long k = py::reinterpret_steal<py::object>(PyNumber_Index(s.ptr())).cast<long long>();
+    const long long k = whole_number_value(s, function, "steps");
     if(k < 0)
       invalid(function, "steps must not be negative, not " + std::to_string(k));
     return std::size_t(k);
   };
   std::vector<std::size_t> result;
-  single = is_integer(steps);
+  single = is_whole_number(steps);
   if(single)
     result.push_back(checked(steps));
   else
@@ -916,6 +945,8 @@ py::array_t<double> denoise(py::object V, py::object F, const std::string& metho
       steps_object.is_none() ? (filtering ? 2 : 1) : whole_number(steps_object, function, "number_of_steps");
   if(iterations < 0)
     invalid(function, "number_of_iterations must not be negative");
+  if(iterations > (std::numeric_limits<unsigned>::max)())
+    invalid(function, "number_of_iterations is out of range: " + std::to_string(iterations));
   if(steps < 0)
     invalid(function, "number_of_steps must not be negative");
   const Diffusion_options o = diffusion_options(function, sigma, time, kernel, m, coarse, false);

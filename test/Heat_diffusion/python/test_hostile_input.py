@@ -269,7 +269,27 @@ def test_arguments_of_the_wrong_type():
         (lambda: hd.filter_shape(V, F, [1.0], steps_per_level="5"), "steps_per_level must be a whole number or None"),
         (lambda: hd.filter_shape(V, F, [1.0], anchor_weight=[1.0]), "anchor_weight must be a number or None"),
         (lambda: hd.decompose(V, F, steps_per_level=True), "steps_per_level must be a whole number or None"),
+        # numpy arrays of one or more dimensions have __index__ too: not a number
+        (lambda: hd.HeatDiffusion(V, F, m=np.array([20])), "m must be a whole number or None"),
+        (lambda: hd.HeatDiffusion(V, F, coarse=np.array([100])), "coarse must be a whole number or None"),
+        (lambda: hd.decompose(V, F, steps_per_level=np.array([2])), "steps_per_level must be a whole number or None"),
+        (lambda: hd.denoise(V, F, number_of_iterations=np.array([3])), "number_of_iterations must be a whole number"),
+        (lambda: hd.HeatDiffusion(V, F, m=10**30), "m is out of range"),
+        (lambda: hd.denoise(V, F, number_of_iterations=2**32), "number_of_iterations is out of range"),
+        (lambda: hd.HeatDiffusion(V, F).diffuse(np.zeros(4), np.array([[1, 2]])), "steps must be a whole number"),
+        (lambda: hd.HeatDiffusion(V, F).diffuse(np.zeros(4), 2**64), "steps is out of range"),
     ]
     for function, message in cases:
         with pytest.raises(ValueError, match=message):
             function()
+
+
+def test_steps_as_numpy_arrays():
+    # A 1-D array of steps is a list of steps; a 0-d array or a numpy integer, one step.
+    d = hd.HeatDiffusion(TETRA_V, TETRA_F)
+    field = np.arange(4, dtype=np.float64)
+    as_list = d.diffuse(field, [0, 3])
+    np.testing.assert_array_equal(d.diffuse(field, np.array([0, 3])), as_list)
+    np.testing.assert_array_equal(d.diffuse(field, np.arange(0, 6, 3)), as_list)
+    np.testing.assert_array_equal(d.diffuse(field, np.int64(3)), d.diffuse(field, 3))
+    np.testing.assert_array_equal(d.diffuse(field, np.array(3)), d.diffuse(field, 3))
