@@ -5,7 +5,7 @@
 #     benchmarks; CTest runs the suites there (all but the doc and install checks
 #     and the three slowest suites, see below), including fuzz_regressions, which
 #     replays the seed corpus and every input in test/Heat_diffusion/fuzz/regressions/;
-#  2. libFuzzer on fuzz_off_pipeline for HEAT_DIFFUSION_FUZZ_SECONDS (default 60) from
+#  2. libFuzzer on fuzz_mesh_pipeline for HEAT_DIFFUSION_FUZZ_SECONDS (default 60) from
 #     the seed corpus test/Heat_diffusion/fuzz/corpus/. A crashing, hanging or
 #     leaking input fails the run and is kept in test/Heat_diffusion/fuzz/regressions/,
 #     where CTest replays it from then on: commit it with the fix.
@@ -39,7 +39,7 @@ cmake -S . -B "$build" -G Ninja -DCMAKE_BUILD_TYPE=Debug -DCGAL_DO_NOT_WARN_ABOU
 # fuzz target, the kernel and diffusion through test_heat_kernel_and_diffusion.
 # Every other suite runs, and only what they need is built.
 excluded='^(doc_heat_diffusion|doc_heat_diffusion_in_browser|install_heat_diffusion|subdirectory_heat_diffusion|compile_fail_parameters|test_coarse_level|test_local_heat_kernel|test_applications)$'
-targets=(heat_diffusion fuzz_off_pipeline)
+targets=(heat_diffusion fuzz_mesh_pipeline)
 for t in $(cd "$build" && ctest -N | sed -n 's/^ *Test *#[0-9]*: //p' | grep -vE "$excluded"); do
   case $t in test_cli|test_hostile_cli|fuzz_regressions) ;; *) targets+=("$t") ;; esac
 done
@@ -52,18 +52,18 @@ echo "== test suite under ASan + UBSan (all but ${excluded})"
 (cd "$build" && ctest --output-on-failure -j "$(nproc)" -E "$excluded")
 stage_done "sanitized test suite"
 
-echo "== fuzzing fuzz_off_pipeline for $seconds s"
+echo "== fuzzing fuzz_mesh_pipeline for $seconds s"
 work_corpus="$build/fuzz_corpus"  # new inputs land here; the seeds stay as they are
 mkdir -p "$work_corpus" "$fuzz_dir/regressions"
 log="$build/fuzz.log"
 status=0
-"$build/bin/fuzz_off_pipeline" -max_total_time="$seconds" -max_len=2048 -timeout=10 -rss_limit_mb=2048 \
+"$build/bin/fuzz_mesh_pipeline" -max_total_time="$seconds" -max_len=2048 -timeout=10 -rss_limit_mb=2048 \
     -print_final_stats=1 -artifact_prefix="$fuzz_dir/regressions/" \
     "$work_corpus" "$fuzz_dir/corpus" >"$log" 2>&1 || status=$?
 grep -E '^#[0-9]+[[:space:]]+(INITED|DONE)|^Done|stat::number_of_executed_units|stat::peak_rss' "$log" || true
 if [ "$status" -ne 0 ]; then
   tail -n 60 "$log"
-  echo "fuzz_off_pipeline failed (exit $status); the input is kept in $fuzz_dir/regressions/:"
+  echo "fuzz_mesh_pipeline failed (exit $status); the input is kept in $fuzz_dir/regressions/:"
   grep -E 'Test unit written to' "$log" || true
   exit 1
 fi

@@ -471,9 +471,12 @@ std::optional<double> optional_number(const py::object& value, const std::string
 {
   if(value.is_none())
     return std::nullopt;
-  if(py::isinstance<py::bool_>(value) || !(py::isinstance<py::float_>(value) || PyIndex_Check(value.ptr())))
+  // (numpy's float64 is a float; an array is not a number, although numpy gives it __index__)
+  if(py::isinstance<py::float_>(value))
+    return value.cast<double>();
+  if(!is_whole_number(value))
     invalid(function, name + " must be a number or None, not " + type_name(value));
-  return value.cast<double>();
+  return double(whole_number_value(value, function, name));
 }
 
 // An optional whole number (None: the C++ function's own default).
@@ -769,8 +772,15 @@ public:
     return features_list(features);
   }
 
-  py::tuple decompose(py::object field, std::size_t levels, py::object steps_object) const
+  py::tuple decompose(py::object field, py::object levels_object, py::object steps_object) const
   {
+    // As the tool's --levels: the bands take levels x n doubles, allocated before any work.
+    if(!is_whole_number(levels_object))
+      invalid("HeatDiffusion.decompose", "levels must be a whole number, not " + type_name(levels_object));
+    const long long requested_levels = whole_number_value(levels_object, "HeatDiffusion.decompose", "levels");
+    if(requested_levels < 1 || requested_levels > 1000)
+      invalid("HeatDiffusion.decompose", "levels must be from 1 to 1000, not " + std::to_string(requested_levels));
+    const std::size_t levels = std::size_t(requested_levels);
     const std::size_t n = number_of_vertices();
     std::vector<double> values = field.is_none() ? normal_signature().cast<std::vector<double> >()
                                                  : field_array(field, n, "HeatDiffusion.decompose");
@@ -835,7 +845,7 @@ py::list multiscale_features(py::object V, py::object F, py::object field, py::o
   return diffusion.features(field, steps, feature_threshold);
 }
 
-py::tuple decompose(py::object V, py::object F, py::object field, std::size_t levels, py::object steps_per_level,
+py::tuple decompose(py::object V, py::object F, py::object field, py::object levels, py::object steps_per_level,
                     double sigma, double time, py::object kernel, py::object m, py::object coarse,
                     bool scale_invariant, py::object progress)
 {
@@ -888,6 +898,9 @@ py::array_t<double> filter_shape(py::object V, py::object F, py::object weights_
   auto mesh = make_mesh(V, F, function);
   const Diffusion_options o = diffusion_options(function, sigma, time, kernel, m, coarse, scale_invariant);
   const std::vector<double> weights = number_list(weights_object, function, "weights");
+  if(weights.empty() || weights.size() > 1000)  // as the tool's --weights: one band per weight
+    invalid(function, "weights must have 1 to 1000 values (one per detail band), not " +
+                          std::to_string(weights.size()));
   const std::optional<long long> steps_per_level = optional_whole_number(steps_object, function, "steps_per_level");
   const std::optional<double> anchor_weight = optional_number(anchor_object, function, "anchor_weight");
   Python_progress guard(std::move(progress));
@@ -957,15 +970,14 @@ py::array_t<double> denoise(py::object V, py::object F, const std::string& metho
       HD::parameters::sigma(o.sigma), HD::parameters::time(o.time), HD::parameters::kernel_method(o.method),
       HD::parameters::number_of_eigenpairs(o.eigenpairs), HD::parameters::coarse_vertex_count(o.coarse),
       HD::parameters::anchor_weight(anchor_weight), HD::parameters::progress_callback(guard.callback()));
-  if(normal_sigma.is_none())  // the default depends on the noise: left to denoise_mesh()
+  // None: the default depends on the noise, left to denoise_mesh()
+  const std::optional<double> sigma_of_normals = optional_number(normal_sigma, function, "normal_sigma");
+  if(!sigma_of_normals)
     guard.run([&] { HD::denoise_mesh(*mesh, np); });
   else
-  {
-    if(!py::isinstance<py::float_>(normal_sigma) && !py::isinstance<py::int_>(normal_sigma))
-      invalid(function, "normal_sigma must be a number or None, not " + type_name(normal_sigma));
-    const double value = normal_sigma.cast<double>();
-    guard.run([&] { HD::denoise_mesh(*mesh, HD::parameters::combine(np, HD::parameters::normal_sigma(value))); });
-  }
+    guard.run([&] {
+      HD::denoise_mesh(*mesh, HD::parameters::combine(np, HD::parameters::normal_sigma(*sigma_of_normals)));
+    });
   return mesh_points(*mesh);
 }
 
@@ -1058,7 +1070,7 @@ PYBIND11_MODULE(cgal_heat_diffusion, module)
            py::kw_only(), py::arg("feature_threshold") = 0.8,
            "Convex and concave features of the diffused field (default: the NS) at each k of steps: a list\n"
            "of dicts {'steps', 'convex', 'concave'} with sorted vertex indices.")
-      .def("decompose", &Heat_diffusion::decompose, py::arg("field") = py::none(), py::arg("levels") = 3,
+      .def("decompose", &Heat_diffusion::decompose, py::arg("field") = py::none(), py::arg("levels") = py::int_(3),
            py::kw_only(), py::arg("steps_per_level") = py::none(),
            "Detail bands (levels, n) and residual (n,) of the field (default: the NS), eq. 24;\n"
            "steps_per_level None: decompose_field()'s default.")
@@ -1079,8 +1091,8 @@ PYBIND11_MODULE(cgal_heat_diffusion, module)
               diffusion_arguments_doc)
                  .c_str());
   module.def("decompose", &decompose, py::arg("V"), py::arg("F"), py::arg("field") = py::none(),
-             py::arg("levels") = 3, py::kw_only(), py::arg("steps_per_level") = py::none(), py::arg("sigma") = 0.1,
-             py::arg("time") = 1.0, py::arg("kernel") = py::none(), py::arg("m") = py::none(),
+             py::arg("levels") = py::int_(3), py::kw_only(), py::arg("steps_per_level") = py::none(),
+             py::arg("sigma") = 0.1, py::arg("time") = 1.0, py::arg("kernel") = py::none(), py::arg("m") = py::none(),
              py::arg("coarse") = py::none(), py::arg("scale_invariant") = false, py::arg("progress") = py::none(),
              (std::string("Detail bands (levels, n) and residual (n,) of the field (default: the NS).\n") +
               diffusion_arguments_doc)

@@ -192,6 +192,7 @@ expect 2 '--method must be normal_filtering or signature_diffusion' -- "$tool" d
 expect 2 '--sigma applies to --method signature_diffusion only' -- "$tool" denoise "$data/elephant.off" --sigma 1
 expect 2 '--kernel applies to --method signature_diffusion only' -- "$tool" denoise "$data/elephant.off" --kernel local
 expect 2 '--normal-sigma applies to --method normal_filtering only' -- "$tool" denoise "$data/elephant.off" --method signature_diffusion --normal-sigma 0.5
+expect 2 '--normalization applies to --method signature_diffusion only' -- "$tool" denoise "$data/elephant.off" --normalization columns
 expect 2 '--normal-sigma must be a number > 0' -- "$tool" denoise "$data/elephant.off" --normal-sigma 0
 expect 2 '--displacement-limit must be a number > 0' -- "$tool" denoise "$data/elephant.off" --displacement-limit nan
 expect 0 'normal_filtering, vertices moved' -- "$tool" denoise "$data/elephant.off" -o nf.off --normal-sigma 0.5 --displacement-limit 0.8

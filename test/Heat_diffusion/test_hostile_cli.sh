@@ -64,6 +64,11 @@ declare -A rejected=(
   [huge_counts.off]='the vertex count 2000000000 is out of range'
   [negative_index.off]='face 0 has the vertex index -1, not one of 0..2'
   [index_out_of_range.off]='face 0 has the vertex index 7, not one of 0..2'
+  # CGAL's PLY and OBJ readers leave indices unchecked: its builder read out of bounds
+  [index_out_of_range.ply]='face 3 has the vertex index 4, not one of 0..3'
+  [negative_index.ply]='face 2 has the vertex index -1, not one of 0..3'
+  [index_out_of_range.obj]='face 4 refers to a vertex the file does not have \(it has 4 vertices'
+  [relative_index_out_of_range.obj]='face 2 refers to a vertex the file does not have'
   [fractional_index.off]='face 0 has the vertex index 1.5'
   [bad_color.off]='vertex 0 has an invalid colour'
   [missing_normal.off]='vertex 1 has 3 numbers, expected 6'

@@ -357,24 +357,40 @@ void write_text(const std::string& path, const std::string& text)
   os << text;
 }
 
-// The tool's reading before the fast reader: true if the file passes the pre-check
-// and CGAL's reader reads it.
+// The same points and halfedge structure, whatever other properties the meshes carry
+// (CGAL's OFF reader adds colour maps to a Surface_mesh; the tool keeps only points).
+bool same_points_and_halfedges(const Mesh& a, const Mesh& b)
+{
+  if(a.number_of_vertices() != b.number_of_vertices() || a.number_of_faces() != b.number_of_faces() ||
+     a.number_of_halfedges() != b.number_of_halfedges())
+    return false;
+  for(Vertex v : a.vertices())
+    if(a.point(v) != b.point(v) || a.halfedge(v) != b.halfedge(v))
+      return false;
+  for(auto h : a.halfedges())
+    if(a.next(h) != b.next(h) || a.target(h) != b.target(h) || a.face(h) != b.face(h))
+      return false;
+  return true;
+}
+
+// The tool's reading without the fast reader: true if the file passes its checks and
+// CGAL's soup reader and builder read it. The mesh is the one CGAL::IO::read_polygon_mesh
+// reads (checked here: the tool builds it with its own code).
 bool read_like_before(const std::string& path, Mesh& mesh)
 {
-  const std::string extension = std::filesystem::path(path).extension().string();
-  std::ifstream is(path, std::ios::binary);
   try
   {
-    if(extension == ".off")
-      heat_diffusion_cli::check_off_stream(is, std::filesystem::file_size(path));
-    else if(extension == ".ply")
-      heat_diffusion_cli::check_ply_stream(is, std::filesystem::file_size(path));
-    return CGAL::IO::read_polygon_mesh(path, mesh);
+    if(!heat_diffusion_cli::read_checked_polygon_mesh(path, mesh))
+      return false;
   }
-  catch(const std::exception&)
+  catch(const heat_diffusion_cli::Input_error&)
   {
     return false;
   }
+  Mesh cgal;
+  CHECK_MESSAGE(CGAL::IO::read_polygon_mesh(path, cgal) && same_points_and_halfedges(mesh, cgal),
+                path << ": the tool's checked reading and CGAL::IO::read_polygon_mesh differ");
+  return true;
 }
 
 // The fast reader reads `path`, to the mesh CGAL's reader gives.
@@ -448,6 +464,11 @@ void check_meshes()
     write_text(stem + "_binary.off", binary_off(mesh));
     for(const std::string suffix : {"_binary.ply", "_ascii.ply", ".obj", "_binary.off"})
       check_reads_identically(stem + suffix);
+    // STL, which only CGAL's readers read: the tool's checked reading gives CGAL's mesh
+    CHECK(CGAL::IO::write_STL(stem + ".stl", mesh, CGAL::parameters::stream_precision(17)));
+    Mesh stl;
+    CHECK_MESSAGE(read_like_before(stem + ".stl", stl) && stl.number_of_faces() == mesh.number_of_faces(),
+                  stem << ".stl: not read");
   }
   // The variants the readers accept beyond what CGAL writes.
   write_text(scratch("comments_crlf.off"),
@@ -564,6 +585,8 @@ void check_hostile()
       {"short.obj", "v 0 0 0\nv 1 0 0\nv 0 1 0\nf 1 2\n"},
       {"unknown.obj", "v 0 0 0\nv 1 0 0\nv 0 1 0\nf 1 2 3\nbogus 1\n"},
       {"repeated.obj", "v 0 0 0\nv 1 0 0\nv 0 1 0\nf 1 2 2\n"},
+      // a relative index before the first vertex, though within the count of the file
+      {"relative_before_first.obj", "v 0 0 0\nv 1 0 0\nf -1 -2 -3\nv 0 1 0\nv 0 0 1\n"},
       {"binary_index.off", "OFF BINARY\n" + std::string("\0\0\0\3\0\0\0\1\0\0\0\0", 12) + std::string(36, '\0') +
                                std::string("\0\0\0\3\0\0\0\0\0\0\0\1\0\0\0\3", 16)},
       // a keyword that only starts with BINARY: the counts after it are not read as ASCII
@@ -575,6 +598,21 @@ void check_hostile()
   {
     write_text(scratch(file.first), file.second);
     check_declines(scratch(file.first));
+  }
+  // The tool rejects a face index out of range in any format with a message that names
+  // the face (CGAL's reader, to which the fast reader leaves them, read out of bounds).
+  const std::vector<std::pair<std::string, std::string>> bad_indices = {
+      {"index.ply", "index.ply: face 0 has the vertex index 3, not one of 0..2"},
+      {"negative.ply", "negative.ply: face 0 has the vertex index -1, not one of 0..2"},
+      {"index.obj", "index.obj: face 1 refers to a vertex the file does not have (it has 3 vertices"},
+      {"zero.obj", "zero.obj: face 1 refers to a vertex the file does not have"},
+      {"relative_before_first.obj", "relative_before_first.obj: face 1 refers to a vertex the file does not have"},
+  };
+  for(const auto& file : bad_indices)
+  {
+    Mesh mesh;
+    CHECK_THROWS(heat_diffusion_cli::read_triangle_mesh(scratch(file.first), mesh), heat_diffusion_cli::Input_error,
+                 file.second);
   }
 }
 
@@ -1178,6 +1216,44 @@ void check_fast_ply_output()
                 "the fast PLY output did not decline a mesh with another property");
 }
 
+// Meshes of 100000 vertices or more are numbered along a Hilbert curve inside the
+// package. A message about a field value still names the vertex by its rank in
+// vertices(tm), the row of the user's arrays; it used to give the Hilbert index alone,
+// which names another vertex. Fandisk subdivided twice: 103,570 vertices.
+void check_vertex_names_on_large_meshes()
+{
+  Mesh mesh = test_support::load<Mesh>("fandisk.off");
+  CGAL::Subdivision_method_3::Loop_subdivision(mesh, CGAL::parameters::number_of_iterations(2));
+  CHECK(mesh.number_of_vertices() >= 100000);
+  const Diffusion diffusion(mesh);
+  const Vertex bad(12345);  // the mesh has no removed vertices: its rank is its index
+  const std::size_t index = diffusion.vertex_index(bad);
+  CHECK_MESSAGE(index != 12345, "the vertices are not renumbered: the check below cannot fail");
+  const std::string name = "vertex 12345 (index " + std::to_string(index) + " of vertex_index())";
+
+  auto field = mesh.add_property_map<Vertex, double>("v:hostile_field", 1.).first;
+  auto out = mesh.add_property_map<Vertex, double>("v:hostile_out", 0.).first;
+  field[bad] = std::numeric_limits<double>::quiet_NaN();
+  CHECK_THROWS(diffusion.diffuse(field, out, 1), std::invalid_argument,
+               "Anisotropic_heat_diffusion: the field value at " + name + " is nan, not a finite number");
+  CHECK_THROWS(HD::detect_multiscale_features(diffusion, field, {0, 1}), std::invalid_argument,
+               "detect_multiscale_features: the field value at " + name + " is nan");
+  std::vector<decltype(out)> bands{mesh.add_property_map<Vertex, double>("v:hostile_band", 0.).first};
+  CHECK_THROWS(HD::decompose_field(diffusion, field, bands, out), std::invalid_argument,
+               "decompose_field: the field value at " + name + " is nan");
+  // The vector interface: rows in the order of vertex_index().
+  Eigen::VectorXd values = Eigen::VectorXd::Ones(Eigen::Index(diffusion.number_of_vertices()));
+  values[Eigen::Index(index)] = std::numeric_limits<double>::infinity();
+  CHECK_THROWS(diffusion.diffuse(values, 1), std::invalid_argument,
+               "Anisotropic_heat_diffusion: the field value at " + name + " is inf");
+  // Where the two numbers agree, the message gives one.
+  const Mesh fandisk = test_support::load<Mesh>("fandisk.off");
+  const Diffusion small(fandisk);
+  Eigen::VectorXd small_values = Eigen::VectorXd::Ones(Eigen::Index(small.number_of_vertices()));
+  small_values[7] = std::numeric_limits<double>::quiet_NaN();
+  CHECK_THROWS(small.diffuse(small_values, 1), std::invalid_argument, "the field value at vertex 7 is nan");
+}
+
 int main()
 {
   try
@@ -1192,6 +1268,7 @@ int main()
     check_iterative_solver_on_components();
     check_removed_elements();
     check_fast_ply_output();
+    check_vertex_names_on_large_meshes();
   }
   catch(const std::exception& e)
   {

@@ -22,6 +22,7 @@
 #include <cstdlib>
 #include <iostream>
 #include <stdexcept>
+#include <sstream>
 #include <string>
 #include <vector>
 

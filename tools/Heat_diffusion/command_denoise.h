@@ -27,7 +27,7 @@ inline Diffusion_spec denoise_spec()
 {
   Diffusion_spec spec;
   spec.sigma_default = "1";
-  spec.sigma_note = "signature diffusion only; much smaller values make the eigen solve fail on noisy meshes";
+  spec.sigma_note = "signature diffusion only";
   spec.time_note = "signature diffusion only";
   spec.steps = Diffusion_spec::single_step;
   spec.steps_default = "2";  // normal filtering; run_denoise() sets 1 for signature diffusion
@@ -41,8 +41,8 @@ inline std::string denoise_help()
 {
   return "Usage: heat_diffusion denoise NOISY [-o OUT] [--method normal_filtering|signature_diffusion]\n"
          "                              [--iterations N] [-k K] [--normal-sigma S] [--displacement-limit D]\n"
-         "                              [--sigma S] [--time T] [--kernel K] [-m M] [--coarse N]\n"
-         "                              [--anchor-weight W] [--json] [--quiet]\n"
+         "                              [--sigma S] [--time T] [--kernel K] [--normalization N] [-m M]\n"
+         "                              [--coarse N] [--anchor-weight W] [--json] [--quiet]\n"
          "\n"
          "Denoises a triangle mesh, keeping its connectivity (CGAL::Heat_diffusion::denoise_mesh).\n"
          "normal_filtering (default): the face normals are diffused with the edge weights of the\n"
@@ -87,7 +87,7 @@ inline void adapt_denoise_spec(const Arguments& args, Diffusion_spec& spec)
     throw Usage_error("--method must be normal_filtering or signature_diffusion, not '" + method_name + "'");
   const bool filtering = method_name == "normal_filtering";
   for(const char* option : filtering ? std::vector<const char*>{"--sigma", "--time", "--kernel", "-m", "--coarse",
-                                                                "--anchor-weight"}
+                                                                "--normalization", "--anchor-weight"}
                                      : std::vector<const char*>{"--normal-sigma", "--displacement-limit"})
     if(args.has(option))
       throw Usage_error(std::string(option) + " applies to --method " +

@@ -151,7 +151,7 @@ inline void warn_about_collapsed_regions(const Diffusion& diffusion, const Diffu
   if(o.local())
     std::cerr << "warning: " << regions.collapsed_regions
               << " heat regions collapsed to their vertex (its edge weights isolate it): those vertices keep "
-                 "their heat; a larger --sigma or --time avoids it\n";
+                 "their heat; a larger --sigma joins them to their neighbours\n";
   else
     std::cerr << "warning: " << regions.collapsed_regions
               << " heat regions collapsed to their vertex (the truncated kernel is too flat at this t): those "

@@ -11,17 +11,20 @@
 #include "mesh_input_checks.h"
 
 #include <CGAL/Exact_predicates_inexact_constructions_kernel.h>
-#include <CGAL/Polygon_mesh_processing/IO/polygon_mesh_io.h>
+#include <CGAL/IO/polygon_soup_io.h>
 #include <CGAL/Polygon_mesh_processing/triangulate_faces.h>
 #include <CGAL/Surface_mesh.h>
 
 #include <algorithm>
 #include <cmath>
 #include <cctype>
+#include <cstdint>
+#include <limits>
 #include <filesystem>
 #include <fstream>
 #include <string>
 #include <utility>
+#include <vector>
 
 namespace heat_diffusion_cli {
 
@@ -70,43 +73,100 @@ inline bool triangulate_polygon_faces(Mesh& mesh)
   return true;
 }
 
-// Reads any format CGAL::IO::read_polygon_mesh reads (OFF, OBJ, PLY, STL, VTP, GOCAD,
-// ...), repairing the polygon soup on the way, and triangulates polygon faces.
-// Returns the number of faces that were triangulated.
+// Throws Input_error when a face of a polygon soup refers to a vertex the soup does
+// not have. CGAL's soup readers keep the indices of a file unchecked (a negative PLY
+// index wraps to a huge std::size_t), and CGAL's mesh builder indexes its vertex
+// array with them: an index out of range read out of bounds and could crash. OBJ
+// faces are numbered from 1, as OBJ numbers its elements.
+inline void check_face_indices(const std::vector<std::vector<std::size_t> >& polygons, std::size_t number_of_vertices,
+                               bool obj)
+{
+  for(std::size_t f = 0; f < polygons.size(); ++f)
+    for(std::size_t index : polygons[f])
+    {
+      if(index < number_of_vertices)
+        continue;
+      const std::string face = "face " + std::to_string(obj ? f + 1 : f);
+      if(number_of_vertices == 0)
+        throw Input_error(face + " has a vertex index, but the file has no vertices");
+      if(obj)  // CGAL's reader has already turned 1-based and relative indices into others
+        throw Input_error(face + " refers to a vertex the file does not have (it has " +
+                          std::to_string(number_of_vertices) +
+                          " vertices; OBJ indices count from 1, negative ones back from the last vertex read)");
+      throw Input_error(face + " has the vertex index " + std::to_string(static_cast<long long>(index)) +
+                        ", not one of 0.." + std::to_string(number_of_vertices - 1));
+    }
+}
+
+// The soup read by CGAL's readers, as the fast reader's soup.
+template <typename Point>
+fast_input::Soup soup_of(const std::vector<Point>& points, const std::vector<std::vector<std::size_t> >& polygons)
+{
+  if(points.size() > std::numeric_limits<std::uint32_t>::max())
+    throw Input_error("more than 2^32 - 1 vertices");
+  fast_input::Soup soup;
+  soup.coordinates.reserve(3 * points.size());
+  for(const Point& p : points)
+    soup.coordinates.insert(soup.coordinates.end(), {p.x(), p.y(), p.z()});
+  for(const std::vector<std::size_t>& polygon : polygons)
+  {
+    soup.indices.insert(soup.indices.end(), polygon.begin(), polygon.end());
+    soup.end_face();
+  }
+  return soup;
+}
+
+// Reads any format CGAL::IO::read_polygon_soup reads (OFF, OBJ, PLY, STL, GOCAD, ...)
+// to the mesh CGAL::IO::read_polygon_mesh builds from it, without repair (a soup that
+// is not a manifold mesh is rejected), but with what that function leaves unchecked
+// checked first: the counts of OFF and PLY files, and the face indices of every
+// format. Returns false where CGAL's reader or builder fails; throws Input_error
+// (the message starts with `path`) on a hostile file.
+template <typename Mesh>
+bool read_checked_polygon_mesh(const std::string& path, Mesh& mesh)
+{
+  std::string extension = fs::path(path).extension().string();
+  std::transform(extension.begin(), extension.end(), extension.begin(),
+                 [](unsigned char ch) { return char(std::tolower(ch)); });
+  try
+  {
+    if(extension == ".off" || extension == ".ply")
+    {
+      std::error_code ec;
+      std::ifstream is(path, std::ios::binary);
+      if(extension == ".off")
+        check_off_stream(is, fs::file_size(path, ec));
+      else
+        check_ply_stream(is, fs::file_size(path, ec));
+    }
+    std::vector<typename Mesh::Point> points;
+    std::vector<std::vector<std::size_t> > polygons;
+    if(!CGAL::IO::read_polygon_soup(path, points, polygons))
+      return false;
+    check_face_indices(polygons, points.size(), extension == ".obj");
+    return fast_input::build_mesh(soup_of(points, polygons), mesh);
+  }
+  catch(const Input_error& e)
+  {
+    throw Input_error(path + ": " + e.what());
+  }
+  catch(const std::exception& e)  // std::bad_alloc, CGAL's assertions
+  {
+    throw Input_error(path + ": cannot read a polygon mesh (" + e.what() + ")");
+  }
+}
+
+// Reads a mesh file as read_checked_polygon_mesh() does, and triangulates polygon
+// faces. OFF, PLY and OBJ files usually take the fast reader, which reads the same
+// mesh; it declines every file it does not read, and those go to
+// read_checked_polygon_mesh(). Returns the number of faces that were triangulated.
 template <typename Mesh>
 std::size_t read_triangle_mesh(const std::string& path, Mesh& mesh)
 {
   std::error_code ec;
   if(!fs::is_regular_file(path, ec))
     throw Input_error(path + ": no such file");
-  std::string extension = fs::path(path).extension().string();
-  std::transform(extension.begin(), extension.end(), extension.begin(),
-                 [](unsigned char ch) { return char(std::tolower(ch)); });
-  const bool fast = fast_input::read_mesh_fast(path, mesh);  // declines what it does not read
-  if(!fast && (extension == ".off" || extension == ".ply"))
-  {
-    std::ifstream is(path, std::ios::binary);
-    try
-    {
-      if(extension == ".off")
-        check_off_stream(is, fs::file_size(path, ec));
-      else
-        check_ply_stream(is, fs::file_size(path, ec));
-    }
-    catch(const Input_error& e)
-    {
-      throw Input_error(path + ": " + e.what());
-    }
-  }
-  bool read = fast;
-  try
-  {
-    read = read || CGAL::IO::read_polygon_mesh(path, mesh);
-  }
-  catch(const std::exception& e)  // std::bad_alloc, CGAL's assertions
-  {
-    throw Input_error(path + ": cannot read a polygon mesh (" + e.what() + ")");
-  }
+  const bool read = fast_input::read_mesh_fast(path, mesh) || read_checked_polygon_mesh(path, mesh);
   if(!read)
     throw Input_error(path + ": cannot read a polygon mesh (unknown format, unreadable or broken file, "
                              "or a polygon soup that is not a manifold mesh)");

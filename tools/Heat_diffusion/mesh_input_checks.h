@@ -191,13 +191,17 @@ inline void check_off_stream(std::istream& is, std::uintmax_t size)
 }
 
 // Checks a PLY stream of `size` bytes before CGAL's reader sees it, and throws
-// Input_error (the message names the element) where that reader would not fail
-// cleanly: element counts and list lengths larger than the file can hold. CGAL's
-// reader sizes a list from its declared length before reading it: a 150-byte file
-// declaring a face of 4e9 vertices made it allocate 16 GB and get killed. Walks the
-// body once, property by property (ASCII or binary, either byte order); anything it
-// does not understand is left to CGAL's reader, which rejects it cleanly.
-// Leaves `is` at an unspecified position.
+// Input_error (the message names the element or header line) where that reader would
+// not fail cleanly:
+// - a property declared before any element: it added it to the last of no elements;
+// - a property of a type PLY does not have: it skipped the declaration and misread
+//   the body;
+// - element counts and list lengths larger than the file can hold: it sizes a list
+//   from its declared length before reading it, and a 150-byte file declaring a face
+//   of 4e9 vertices made it allocate 16 GB and get killed.
+// Walks the body once, property by property (ASCII or binary, either byte order);
+// anything else it does not understand is left to CGAL's reader, which rejects it
+// cleanly. Leaves `is` at an unspecified position.
 inline void check_ply_stream(std::istream& is, std::uintmax_t size)
 {
   auto fail = [](const std::string& what) { throw Input_error("cannot read the PLY file: " + what); };
@@ -244,6 +248,8 @@ inline void check_ply_stream(std::istream& is, std::uintmax_t size)
     }
     else if(keyword == "property")
     {
+      if(elements.empty())  // CGAL's reader would add it to the last of no elements
+        fail("the header line '" + line + "' declares a property before any element");
       Property p{false, "", "", ""};
       std::string type;
       words >> type;
@@ -252,17 +258,15 @@ inline void check_ply_stream(std::istream& is, std::uintmax_t size)
         p.list = true;
         words >> p.count_type >> p.value_type >> p.name;
         if(type_size(p.count_type) == 0 || type_size(p.value_type) == 0)
-          return;
+          fail("the header line '" + line + "' has a type that is not a PLY type");
       }
       else
       {
         p.value_type = type;
         words >> p.name;
-        if(type_size(type) == 0)
-          return;
+        if(type_size(type) == 0)  // CGAL's reader skips the declaration and misreads the body
+          fail("the header line '" + line + "' has a type that is not a PLY type");
       }
-      if(elements.empty())
-        return;
       elements.back().properties.push_back(p);
     }
     else if(keyword == "end_header")

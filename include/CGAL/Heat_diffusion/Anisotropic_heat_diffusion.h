@@ -345,7 +345,8 @@ private:
   {
     if(field.size() != Eigen::Index(number_of_vertices()))
       internal::throw_invalid_input("Anisotropic_heat_diffusion: the field has the wrong size");
-    internal::check_finite_values(field, "Anisotropic_heat_diffusion");
+    internal::check_finite_field(field, ncc_->mesh(), [this](vertex_descriptor v) { return vertex_index(v); },
+                                 "Anisotropic_heat_diffusion");
   }
 
   static Operator_normalization checked_normalization(Operator_normalization normalization)

@@ -150,6 +150,20 @@ def test_bad_fields_and_steps():
             function()
 
 
+def test_field_errors_name_the_row_on_large_meshes(mesh):
+    # Meshes of 100000 vertices or more are renumbered inside the package (along a
+    # Hilbert curve); a message about a field value names the caller's row all the same.
+    V, F, _ = mesh("fandisk.off")
+    V, F = hd.loop_subdivision(V, F, 2)
+    assert len(V) >= 100000
+    d = hd.HeatDiffusion(V, F)
+    bad = d.normal_signature()
+    bad[12345] = np.nan
+    for function in (lambda: d.diffuse(bad, 1), lambda: d.features(bad, [0]), lambda: d.decompose(bad, 1)):
+        with pytest.raises(ValueError, match=r"field value at vertex 12345 \(index \d+ of vertex_index\(\)\) is nan"):
+            function()
+
+
 HOSTILE_DIR = os.environ.get("HEAT_DIFFUSION_HOSTILE_DATA_DIR", "")
 HOSTILE_FILES = sorted(os.listdir(HOSTILE_DIR)) if os.path.isdir(HOSTILE_DIR) else []
 
@@ -263,6 +277,12 @@ def test_arguments_of_the_wrong_type():
         (lambda: hd.HeatDiffusion(V, F, coarse=[4]), "coarse must be a whole number or None"),
         (lambda: hd.HeatDiffusion(V, F, kernel=1), "kernel must be 'local', 'spectral' or None"),
         (lambda: hd.filter_shape(V, F, "13"), "weights must be a sequence of numbers"),
+        (lambda: hd.filter_shape(V, F, []), r"weights must have 1 to 1000 values \(one per detail band\), not 0"),
+        (lambda: hd.decompose(V, F, levels=0), "levels must be from 1 to 1000, not 0"),
+        (lambda: hd.decompose(V, F, levels=-1), "levels must be from 1 to 1000, not -1"),
+        # refused before the bands (levels x n doubles) are allocated
+        (lambda: hd.decompose(V, F, levels=10**6), "levels must be from 1 to 1000, not 1000000"),
+        (lambda: hd.decompose(V, F, levels=2.0), "levels must be a whole number, not float"),
         (lambda: hd.synthesize(np.zeros((1, 4)), np.zeros(4), None), "weights must be a sequence of numbers"),
         (lambda: hd.denoise(V, F, number_of_iterations=1.5), "number_of_iterations must be a whole number"),
         (lambda: hd.denoise(V, F, normal_sigma="wide"), "normal_sigma must be a number or None"),
@@ -274,6 +294,9 @@ def test_arguments_of_the_wrong_type():
         (lambda: hd.HeatDiffusion(V, F, coarse=np.array([100])), "coarse must be a whole number or None"),
         (lambda: hd.decompose(V, F, steps_per_level=np.array([2])), "steps_per_level must be a whole number or None"),
         (lambda: hd.denoise(V, F, number_of_iterations=np.array([3])), "number_of_iterations must be a whole number"),
+        (lambda: hd.denoise(V, F, normal_sigma=np.array([0.3])), "normal_sigma must be a number or None"),
+        (lambda: hd.denoise(V, F, normal_sigma=True), "normal_sigma must be a number or None"),
+        (lambda: hd.filter_shape(V, F, [1.0], anchor_weight=np.array([1.0])), "anchor_weight must be a number or None"),
         (lambda: hd.HeatDiffusion(V, F, m=10**30), "m is out of range"),
         (lambda: hd.denoise(V, F, number_of_iterations=2**32), "number_of_iterations is out of range"),
         (lambda: hd.HeatDiffusion(V, F).diffuse(np.zeros(4), np.array([[1, 2]])), "steps must be a whole number"),
@@ -282,6 +305,15 @@ def test_arguments_of_the_wrong_type():
     for function, message in cases:
         with pytest.raises(ValueError, match=message):
             function()
+
+
+def test_numbers_as_numpy_scalars():
+    # numpy's float64 and integers are numbers, as Python's are.
+    V, F = TETRA_V, TETRA_F
+    np.testing.assert_array_equal(hd.denoise(V, F, normal_sigma=np.float64(0.3)), hd.denoise(V, F, normal_sigma=0.3))
+    np.testing.assert_array_equal(hd.denoise(V, F, normal_sigma=np.int64(1)), hd.denoise(V, F, normal_sigma=1.0))
+    np.testing.assert_array_equal(hd.filter_shape(V, F, [1.0], anchor_weight=np.int32(2)),
+                                  hd.filter_shape(V, F, [1.0], anchor_weight=2.0))
 
 
 def test_steps_as_numpy_arrays():

@@ -7,10 +7,7 @@
 #ifndef CGAL_HEAT_DIFFUSION_INTERNAL_ERRORS_H
 #define CGAL_HEAT_DIFFUSION_INTERNAL_ERRORS_H
 
-#include <Eigen/Core>
-
 #include <cmath>
-#include <sstream>
 #include <stdexcept>
 #include <string>
 
@@ -40,19 +37,6 @@ inline double checked_positive(double x, const char* where, const char* name)
   if(!(x > 0) || !std::isfinite(x))
     throw_invalid_input(std::string(where) + ": " + name + " must be positive and finite");
   return x;
-}
-
-// The values of a field by vertex index, all finite; the message names the caller,
-// the first vertex whose value is not finite and that value.
-inline void check_finite_values(const Eigen::VectorXd& values, const char* where, const char* what = "field value")
-{
-  for(Eigen::Index i = 0; i < values.size(); ++i)
-    if(!std::isfinite(values[i]))
-    {
-      std::ostringstream os;
-      os << where << ": the " << what << " at vertex " << i << " is " << values[i] << ", not a finite number";
-      throw_invalid_input(os.str());
-    }
 }
 
 } // namespace internal

@@ -21,6 +21,7 @@
 #include <cmath>
 #include <cstring>
 #include <functional>
+#include <memory>
 #include <numeric>
 #include <sstream>
 #include <stdexcept>
@@ -53,7 +54,7 @@ struct Generalized_eigensolver_options
   Eigen::Index subspace_dimension = 0; // 0: automatic (see `automatic_subspace_dimension`)
   double shift = 0.;                   // 0: automatic; an explicit value must be < 0
   double tolerance = 1e-10;            // Spectra's relative tolerance on the Ritz values
-  Eigen::Index max_restarts = 300;
+  Eigen::Index max_restarts = 40;      // per window (converging runs take 4 to 15)
   Eigen::Index dense_size_threshold = 400;  // n <= this: dense solver
   double orthonormality_threshold = 1e-12;  // max|Phi^T B Phi - I| above this: Rayleigh-Ritz
 };
@@ -77,6 +78,10 @@ inline Eigen::Index automatic_subspace_dimension(Eigen::Index m, Eigen::Index n)
   const Eigen::Index ncv = std::max<Eigen::Index>(m + m / 2 + 1, m + 20);
   return std::min(ncv, n);
 }
+
+// The eigenpairs added to a window of wanted eigenvalues that ends inside a cluster
+// (see compute_smallest_generalized_eigenpairs()).
+constexpr Eigen::Index extra_window = 60;
 
 // Shift sigma < 0, relative to the scale of the smallest nonzero eigenvalue.
 //
@@ -195,36 +200,54 @@ compute_smallest_generalized_eigenpairs(const SparseMatrix& L,
   SparseMatrix permuted_B;
   permuted_B = B.twistedBy(P);   // P B P^T
 
-  const Index ncv = options.subspace_dimension > m
-                      ? std::min(options.subspace_dimension, n)
-                      : impl::automatic_subspace_dimension(m, n);
-
   // Progress: the number of operator applications is not known in advance; measured
   // runs needed 1.5-2 ncv of them (one full sweep, then a few restarts), which the
   // saturating curve 1 - exp(-a / ncv) maps to roughly 0.6-0.9.
-  Index applications = 0;
+  Index ncv = 0, applications = 0;
   const std::function<void()> on_application = [&]() {
     ++applications;
     if(progress && applications % 16 == 0)
       report(0.05 + 0.85 * (1. - std::exp(-double(applications) / double(ncv))));
   };
-
   impl::Transformed_operator<SparseMatrix> op(factor, permuted_B, on_application);
-  Spectra::SymEigsSolver<impl::Transformed_operator<SparseMatrix>> lanczos(op, m, ncv);
-  lanczos.init();
-  // The nu = 1/(lambda - sigma) are all positive: the largest ones are the wanted ones.
-  lanczos.compute(Spectra::SortRule::LargestAlge, options.max_restarts, options.tolerance,
-                  Spectra::SortRule::LargestAlge);
-  if(lanczos.info() != Spectra::CompInfo::Successful)
-    throw std::runtime_error(
-      "Heat_diffusion: the Lanczos eigensolver did not converge (m = " + std::to_string(m) +
-      " eigenpairs, n = " + std::to_string(n) + ", ncv = " + std::to_string(ncv) +
-      ", restarts = " + std::to_string(lanczos.num_iterations()) + ", shift = " +
-      impl::to_short_string(shift) + "). Remedies: request fewer eigenpairs, enlarge the subspace "
-      "(subspace_dimension) or max_restarts, or check that the mesh has no degenerate faces.");
+
+  // Lanczos stalls when its window of wanted eigenvalues ends inside a tight cluster:
+  // at a small sigma, weak edges across the creases of a CAD mesh split it into nearly
+  // disconnected patches, each with an eigenvalue near 0 (fandisk at sigma = 0.1 has
+  // some 25, in [0, 1e-6] against a shift of 3e-3). A window that ends past the cluster
+  // converges in a few restarts, and its first m pairs are the wanted ones: a window
+  // that has not converged after max_restarts is widened once. A cluster wider than
+  // that (hundreds of needle patches) is reported: truncating inside it would pick an
+  // arbitrary part of it anyway.
+  const Index windows[2] = {m, std::min(m + impl::extra_window, n / 3)};
+  typedef Spectra::SymEigsSolver<impl::Transformed_operator<SparseMatrix>> Lanczos;
+  std::unique_ptr<Lanczos> lanczos;
+  for(const Index window : windows)
+  {
+    ncv = options.subspace_dimension > window ? std::min(options.subspace_dimension, n)
+                                              : impl::automatic_subspace_dimension(window, n);
+    applications = 0;
+    lanczos.reset(new Lanczos(op, window, ncv));
+    lanczos->init();
+    // The nu = 1/(lambda - sigma) are all positive: the largest ones are the wanted ones.
+    lanczos->compute(Spectra::SortRule::LargestAlge, options.max_restarts, options.tolerance,
+                     Spectra::SortRule::LargestAlge);
+    if(lanczos->info() == Spectra::CompInfo::Successful)
+      break;
+    if(window >= windows[1])
+      throw std::runtime_error(
+        "Heat_diffusion: the Lanczos eigensolver did not converge (m = " + std::to_string(m) +
+        (window > m ? " eigenpairs, then " + std::to_string(window) : std::string(" eigenpairs")) + ", n = " + std::to_string(n) + ", ncv = " +
+        std::to_string(ncv) + ", restarts = " + std::to_string(lanczos->num_iterations()) + ", shift = " +
+        impl::to_short_string(shift) + "). The smallest eigenvalues form a cluster wider than the " +
+        std::to_string(window) + " pairs computed: at this sigma, weak edges split the mesh into many nearly "
+        "disconnected patches, each with an eigenvalue near 0. Remedies: a larger sigma, more eigenpairs than the "
+        "patches, or the local heat kernel, which does not truncate the spectrum; also check that the mesh has "
+        "no degenerate faces.");
+  }
 
   // Back to the generalized problem: phi_perm = R^{-T} y.
-  Eigen::MatrixXd Phi = lanczos.eigenvectors(m);
+  Eigen::MatrixXd Phi = lanczos->eigenvectors(m);
   factor.solve_upper_in_place(Phi.data(), m);
 
   // Verify B-orthonormality. In exact arithmetic the Ritz vectors y are orthonormal and
@@ -288,8 +311,8 @@ compute_smallest_generalized_eigenpairs(const SparseMatrix& L,
   result.eigenvectors = P.transpose() * Phi;   // back to the caller's vertex numbering
   result.shift = shift;
   result.subspace_dimension = ncv;
-  result.iterations = lanczos.num_iterations();
-  result.operator_applications = lanczos.num_operations();
+  result.iterations = lanczos->num_iterations();
+  result.operator_applications = lanczos->num_operations();
   report(1.);
   return result;
 }

@@ -16,11 +16,50 @@
 
 #include <Eigen/Core>
 
+#include <cmath>
 #include <cstddef>
+#include <sstream>
+#include <string>
 
 namespace CGAL {
 namespace Heat_diffusion {
 namespace internal {
+
+// The number by which messages name the vertex of package index `index`: its rank in
+// vertices(tm), the order of the user's arrays and of make_indexed_mesh()'s messages,
+// followed by the index itself where the two differ (meshes numbered along a Hilbert
+// curve, or by a vertex index map of the user's).
+template <typename TriangleMesh, typename IndexOf>
+std::string vertex_name(const TriangleMesh& tm, std::size_t index, const IndexOf& index_of)
+{
+  std::size_t rank = 0;
+  for(auto v : vertices(tm))
+  {
+    if(std::size_t(index_of(v)) == index)
+      break;
+    ++rank;
+  }
+  std::string name = "vertex " + std::to_string(rank);
+  if(rank != index)
+    name += " (index " + std::to_string(index) + " of vertex_index())";
+  return name;
+}
+
+// Throws std::invalid_argument if a value of `values` (by package index) is not
+// finite; the message names the caller, the vertex as vertex_name() does, and the value.
+template <typename TriangleMesh, typename IndexOf>
+void check_finite_field(const Eigen::VectorXd& values, const TriangleMesh& tm, const IndexOf& index_of,
+                        const char* where, const char* what = "field value")
+{
+  for(Eigen::Index i = 0; i < values.size(); ++i)
+    if(!std::isfinite(values[i]))
+    {
+      std::ostringstream os;
+      os << where << ": the " << what << " at " << vertex_name(tm, std::size_t(i), index_of) << " is " << values[i]
+         << ", not a finite number";
+      throw_invalid_input(os.str());
+    }
+}
 
 // The values of `field` at the vertices of `tm`, at the indices index_of(v) < n,
 // checked finite (`where` names the caller, `what` the values in the message).
@@ -31,7 +70,7 @@ Eigen::VectorXd read_vertex_field(const TriangleMesh& tm, std::size_t n, const F
   Eigen::VectorXd values(static_cast<Eigen::Index>(n));
   for(auto v : vertices(tm))
     values[Eigen::Index(index_of(v))] = CGAL::to_double(get(field, v));
-  check_finite_values(values, where, what);
+  check_finite_field(values, tm, index_of, where, what);
   return values;
 }
 

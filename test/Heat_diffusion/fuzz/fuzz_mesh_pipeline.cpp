@@ -1,22 +1,25 @@
 // Copyright (c) 2026 The CGAL Heat_diffusion developers.
 // SPDX-License-Identifier: LGPL-3.0-or-later
 //
-// libFuzzer target: arbitrary bytes as an OFF file, through the tool's fast reader
-// (compared with the pre-check and CGAL's reader), the tool's reading path
-// (check_off_stream, CGAL's polygon soup reader, repair, orientation, triangulation)
-// and the API user's (CGAL::IO::read_OFF into a Surface_mesh), then NCC, the
-// reconstruction, the default denoising, a small heat kernel (m <= 10), diffusion and
-// feature detection, with parameters drawn from the input.
+// libFuzzer target: arbitrary bytes as a mesh file (PLY if they start with "ply", OBJ
+// if a line starts with "v ", OFF otherwise), through
+// - the tool's fast reader, compared with its checked reading (the pre-checks, CGAL's
+//   soup reader, the face index check) and, for OFF, with CGAL::IO::read_OFF;
+// - the tool's whole reading, read_triangle_mesh(), on the bytes as a file;
+// - for OFF, the API user's paths: CGAL::IO::read_OFF into a Surface_mesh, and the
+//   documented repair of a soup (repair_polygon_soup, orient_polygon_soup);
+// then NCC, the reconstruction, the default denoising, a small heat kernel (m <= 10),
+// diffusion and feature detection, with parameters drawn from the input.
 //
-// Fine: std::invalid_argument and std::runtime_error from the package (and any
-// std::exception from CGAL's reading and repair, which the tool reports as bad input).
-// A bug: any other exception from the package, a crash, a sanitizer report, a NaN
-// or infinity in an output when nothing was thrown, heat that is not conserved.
+// Fine: std::invalid_argument and std::runtime_error from the package, an Input_error
+// from the tool's reading (and any std::exception from CGAL's reading and repair on
+// the API user's paths). A bug: any other exception, a crash, a sanitizer report, a
+// NaN or infinity in an output when nothing was thrown, heat that is not conserved.
 //
 // Run by scripts/sanitize_and_fuzz.sh; test/Heat_diffusion/fuzz/regressions/ holds
 // the inputs that once failed.
 
-#include "mesh_input.h"  // check_off_stream, Input_error, the tool's Mesh
+#include "mesh_input.h"  // the tool's reading, Input_error, the tool's Mesh
 
 #include <CGAL/Heat_diffusion/Anisotropic_heat_diffusion.h>
 #include <CGAL/Heat_diffusion/Edge_weighted_heat_kernel.h>
@@ -36,10 +39,12 @@
 #include <cstdint>
 #include <cstdio>
 #include <cstdlib>
+#include <fstream>
 #include <limits>
 #include <map>
 #include <sstream>
 #include <string>
+#include <unistd.h>
 #include <vector>
 
 namespace {
@@ -56,7 +61,7 @@ const std::size_t maximum_faces = 160;
 
 [[noreturn]] void bug(const std::string& what)
 {
-  std::fprintf(stderr, "fuzz_off_pipeline: BUG: %s\n", what.c_str());
+  std::fprintf(stderr, "fuzz_mesh_pipeline: BUG: %s\n", what.c_str());
   std::abort();
 }
 
@@ -190,6 +195,26 @@ void run_package(const Mesh& mesh, const Parameters& p)
   }
 }
 
+// The file format the bytes are read as.
+std::string extension_of(const std::string& text)
+{
+  if(text.compare(0, 3, "ply") == 0)
+    return ".ply";
+  if(text.compare(0, 2, "v ") == 0 || text.find("\nv ") != std::string::npos)
+    return ".obj";
+  return ".off";
+}
+
+// The tool reads files: the bytes go to a file of this process's own.
+std::string write_scratch_file(const std::string& text, const std::string& extension)
+{
+  const std::string path = "/tmp/fuzz_mesh_pipeline_" + std::to_string(::getpid()) + extension;
+  std::ofstream os(path, std::ios::binary | std::ios::trunc);
+  os.write(text.data(), std::streamsize(text.size()));
+  require(bool(os.flush()), "cannot write " + path);
+  return path;
+}
+
 } // namespace
 
 extern "C" int LLVMFuzzerTestOneInput(const std::uint8_t* data, std::size_t size)
@@ -198,29 +223,56 @@ extern "C" int LLVMFuzzerTestOneInput(const std::uint8_t* data, std::size_t size
     return 0;
   const std::string text(reinterpret_cast<const char*>(data), size);
   const Parameters p = parameters_of(data, size);
+  const std::string extension = extension_of(text);
+  const std::string path = write_scratch_file(text, extension);
+  namespace fi = heat_diffusion_cli::fast_input;
 
-  // The tool's fast OFF reader reads a subset of what the pre-check and CGAL's reader
-  // accept, to the identical mesh: what it accepts, they must accept.
+  // The tool's fast reader reads a subset of what its checked reading accepts, to the
+  // identical mesh: what it accepts, that must accept.
+  Mesh fast;
+  if(fi::read_mesh_fast(path, fast))
   {
-    namespace fi = heat_diffusion_cli::fast_input;
-    fi::Soup soup;
-    Mesh fast;
-    if(fi::parse_off(text.data(), text.data() + text.size(), soup) && fi::build_mesh(soup, fast))
+    Mesh checked;
+    try
     {
-      std::istringstream is(text), again(text);
-      try
-      {
-        heat_diffusion_cli::check_off_stream(is, size);
-      }
-      catch(const heat_diffusion_cli::Input_error& e)
-      {
-        bug(std::string("the fast reader accepts what the pre-check rejects: ") + e.what());
-      }
+      require(heat_diffusion_cli::read_checked_polygon_mesh(path, checked),
+              "the fast reader accepts what CGAL's reader rejects");
+    }
+    catch(const heat_diffusion_cli::Input_error& e)
+    {
+      bug(std::string("the fast reader accepts what the checks reject: ") + e.what());
+    }
+    require(fi::identical_meshes(fast, checked), "the fast reader's mesh differs from the checked reading's");
+    if(extension == ".off")  // and the mesh is CGAL's, built by CGAL's own code
+    {
+      std::istringstream is(text);
       Mesh cgal;
-      require(CGAL::IO::read_OFF(again, cgal), "the fast reader accepts what CGAL's reader rejects");
+      require(CGAL::IO::read_OFF(is, cgal), "the fast reader accepts what CGAL's OFF reader rejects");
       require(fi::identical_meshes(fast, cgal), "the fast reader's mesh differs from CGAL's");
     }
   }
+
+  // The tool's reading: the mesh, or an Input_error.
+  {
+    Mesh mesh;
+    bool read = false;
+    try
+    {
+      heat_diffusion_cli::read_triangle_mesh(path, mesh);
+      read = true;
+    }
+    catch(const heat_diffusion_cli::Input_error&)
+    {
+    }
+    catch(const std::exception& e)
+    {
+      bug(std::string("the tool's reading threw something other than an Input_error: ") + e.what());
+    }
+    if(read && mesh.number_of_faces() <= maximum_faces)
+      run_package(mesh, p);
+  }
+  if(extension != ".off")
+    return 0;
 
   // CGAL's OFF reader is unsafe on hostile files (huge allocations, unchecked
   // conversions); the tool checks the file first, and so does this target.
@@ -252,7 +304,7 @@ extern "C" int LLVMFuzzerTestOneInput(const std::uint8_t* data, std::size_t size
       run_package(mesh, p);
   }
 
-  // The tool's path (CGAL::IO::read_polygon_mesh and triangulate_faces, on a stream).
+  // The documented repair of a polygon soup, then the tool's triangulation.
   {
     std::istringstream is(text);
     std::vector<Mesh::Point> points;
