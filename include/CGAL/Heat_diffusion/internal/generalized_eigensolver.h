@@ -237,9 +237,10 @@ compute_smallest_generalized_eigenpairs(const SparseMatrix& L,
     if(window >= windows[1])
       throw std::runtime_error(
         "Heat_diffusion: the Lanczos eigensolver did not converge (m = " + std::to_string(m) +
-        (window > m ? " eigenpairs, then " + std::to_string(window) : std::string(" eigenpairs")) + ", n = " + std::to_string(n) + ", ncv = " +
-        std::to_string(ncv) + ", restarts = " + std::to_string(lanczos->num_iterations()) + ", shift = " +
-        impl::to_short_string(shift) + "). The smallest eigenvalues form a cluster wider than the " +
+        (window > m ? " eigenpairs, then " + std::to_string(window) : std::string(" eigenpairs")) +
+        ", n = " + std::to_string(n) + ", ncv = " + std::to_string(ncv) +
+        ", restarts = " + std::to_string(lanczos->num_iterations()) + ", shift = " + impl::to_short_string(shift) +
+        "). The smallest eigenvalues form a cluster wider than the " +
         std::to_string(window) + " pairs computed: at this sigma, weak edges split the mesh into many nearly "
         "disconnected patches, each with an eigenvalue near 0. Remedies: a larger sigma, more eigenpairs than the "
         "patches, or the local heat kernel, which does not truncate the spectrum; also check that the mesh has "

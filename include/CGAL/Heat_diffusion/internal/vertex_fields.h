@@ -25,10 +25,10 @@ namespace CGAL {
 namespace Heat_diffusion {
 namespace internal {
 
-// The number by which messages name the vertex of package index `index`: its rank in
-// vertices(tm), the order of the user's arrays and of make_indexed_mesh()'s messages,
-// followed by the index itself where the two differ (meshes numbered along a Hilbert
-// curve, or by a vertex index map of the user's).
+// How messages name the vertex of package index `index`: "vertex R", R its rank in
+// vertices(tm) (the order of the user's arrays and of make_indexed_mesh()'s messages),
+// followed by the index where the two differ (meshes numbered along a Hilbert curve,
+// or by a vertex index map of the user's). Linear: for error messages only.
 template <typename TriangleMesh, typename IndexOf>
 std::string vertex_name(const TriangleMesh& tm, std::size_t index, const IndexOf& index_of)
 {
