@@ -400,6 +400,16 @@ private:
   std::shared_ptr<py::error_already_set> error_;
 };
 
+// Runs `work(np)` without the GIL, `np` holding a progress callback through which
+// Ctrl-C cancels the work between two diffusion steps.
+template <typename Work>
+auto interruptible(Work&& work)
+{
+  Python_progress guard{py::none()};
+  const std::function<bool(double)> callback = guard.callback();
+  return guard.run([&] { return work(HD::parameters::progress_callback(callback)); });
+}
+
 // The diffusion options shared by every function that diffuses, named as the C++
 // named parameters and the tool's options: sigma, time, kernel ("local", "spectral" or
 // None: local unless m or coarse is given, the package's Heat_kernel_method::automatic),
@@ -477,6 +487,28 @@ std::optional<double> optional_number(const py::object& value, const std::string
   if(!is_whole_number(value))
     invalid(function, name + " must be a number or None, not " + type_name(value));
   return double(whole_number_value(value, function, name));
+}
+
+// A whole number from `lowest` to `highest`, with a ValueError that names it and the range.
+long long bounded_whole_number(const py::handle& value, const std::string& function, const std::string& name,
+                               long long lowest, long long highest = (std::numeric_limits<long long>::max)())
+{
+  if(!is_whole_number(value))
+    invalid(function, name + " must be a whole number, not " + type_name(value));
+  const long long k = whole_number_value(value, function, name);
+  if(k < lowest || k > highest)
+    invalid(function, name + (highest == (std::numeric_limits<long long>::max)()
+                                  ? (lowest == 0 ? " must not be negative" : " must be at least " + std::to_string(lowest))
+                                  : " must be from " + std::to_string(lowest) + " to " + std::to_string(highest)) +
+                          ", not " + std::to_string(k));
+  return k;
+}
+
+// decompose()'s levels, as the tool's --levels: the bands take levels x n doubles,
+// allocated before any work.
+std::size_t checked_levels(const py::handle& levels, const std::string& function)
+{
+  return std::size_t(bounded_whole_number(levels, function, "levels", 1, 1000));
 }
 
 // An optional whole number (None: the C++ function's own default).
@@ -565,10 +597,7 @@ std::vector<std::size_t> step_list(const py::object& steps, const std::string& f
   auto checked = [&](const py::handle& s) {
     if(!is_whole_number(s))
       invalid(function, "steps must be a whole number or a list of them, not " + type_name(s));
-    const long long k = whole_number_value(s, function, "steps");
-    if(k < 0)
-      invalid(function, "steps must not be negative, not " + std::to_string(k));
-    return std::size_t(k);
+    return std::size_t(bounded_whole_number(s, function, "steps", 0));
   };
   std::vector<std::size_t> result;
   single = is_whole_number(steps);
@@ -695,14 +724,11 @@ public:
     return result;
   }
 
-  // F^k for every k of `steps` (package order), in one pass without the GIL; Ctrl-C
-  // cancels it between two steps (through the package's progress callback).
+  // F^k for every k of `steps` (package order), in one pass (interruptible()).
   std::vector<Eigen::VectorXd> interruptible_diffusion(const Eigen::VectorXd& f0,
                                                        const std::vector<std::size_t>& steps) const
   {
-    Python_progress guard{py::none()};
-    const std::function<bool(double)> callback = guard.callback();
-    return guard.run([&] { return diffusion_->diffuse(f0, steps, HD::parameters::progress_callback(callback)); });
+    return interruptible([&](const auto& progress) { return diffusion_->diffuse(f0, steps, progress); });
   }
 
   // A_t in the input's vertex order, as scipy.sparse.csc_matrix (sorted row indices).
@@ -765,22 +791,17 @@ public:
     const std::vector<std::size_t> ks = step_list(steps, "HeatDiffusion.features", single);
     std::vector<double> values = field.is_none() ? normal_signature().cast<std::vector<double> >()
                                                  : field_array(field, number_of_vertices(), "HeatDiffusion.features");
-    const auto features = without_gil([&] {
-      return HD::detect_multiscale_features(*diffusion_, Input_order_field{values.data()}, ks,
-                                            HD::parameters::feature_threshold(feature_threshold));
+    const auto features = interruptible([&](const auto& progress) {
+      return HD::detect_multiscale_features(
+          *diffusion_, Input_order_field{values.data()}, ks,
+          HD::parameters::combine(progress, HD::parameters::feature_threshold(feature_threshold)));
     });
     return features_list(features);
   }
 
   py::tuple decompose(py::object field, py::object levels_object, py::object steps_object) const
   {
-    // As the tool's --levels: the bands take levels x n doubles, allocated before any work.
-    if(!is_whole_number(levels_object))
-      invalid("HeatDiffusion.decompose", "levels must be a whole number, not " + type_name(levels_object));
-    const long long requested_levels = whole_number_value(levels_object, "HeatDiffusion.decompose", "levels");
-    if(requested_levels < 1 || requested_levels > 1000)
-      invalid("HeatDiffusion.decompose", "levels must be from 1 to 1000, not " + std::to_string(requested_levels));
-    const std::size_t levels = std::size_t(requested_levels);
+    const std::size_t levels = checked_levels(levels_object, "HeatDiffusion.decompose");
     const std::size_t n = number_of_vertices();
     std::vector<double> values = field.is_none() ? normal_signature().cast<std::vector<double> >()
                                                  : field_array(field, n, "HeatDiffusion.decompose");
@@ -790,16 +811,17 @@ public:
     py::array_t<double> residual(static_cast<py::ssize_t>(n));
     double* band_data = bands.mutable_data();
     double* residual_data = residual.mutable_data();
-    without_gil([&] {
+    interruptible([&](const auto& progress) {
       std::vector<Input_order_field> maps;
       for(std::size_t j = 0; j < levels; ++j)
         maps.push_back(Input_order_field{band_data + j * n});
       // Only if given: decompose_field() keeps its own default.
       if(steps_per_level)
         HD::decompose_field(*diffusion_, Input_order_field{values.data()}, maps, Input_order_field{residual_data},
-                            HD::parameters::steps_per_level(*steps_per_level));
+                            HD::parameters::combine(progress, HD::parameters::steps_per_level(*steps_per_level)));
       else
-        HD::decompose_field(*diffusion_, Input_order_field{values.data()}, maps, Input_order_field{residual_data});
+        HD::decompose_field(*diffusion_, Input_order_field{values.data()}, maps, Input_order_field{residual_data},
+                            progress);
     });
     return py::make_tuple(bands, residual);
   }
@@ -849,6 +871,7 @@ py::tuple decompose(py::object V, py::object F, py::object field, py::object lev
                     double sigma, double time, py::object kernel, py::object m, py::object coarse,
                     bool scale_invariant, py::object progress)
 {
+  checked_levels(levels, "decompose");  // before the diffusion is built
   const Heat_diffusion diffusion(V, F, sigma, time, kernel, m, coarse, scale_invariant, py::none(), progress);
   return diffusion.decompose(field, levels, steps_per_level);
 }
@@ -952,16 +975,13 @@ py::array_t<double> denoise(py::object V, py::object F, const std::string& metho
     invalid(function, "method must be 'normal_filtering' or 'signature_diffusion', not '" + method + "'");
   const bool filtering = denoising == HD::Denoising_method::normal_filtering;
   // The defaults of denoise_mesh(), which depend on the method.
-  const long long iterations = iterations_object.is_none() ? (filtering ? 100 : 2)
-                                                          : whole_number(iterations_object, function, "number_of_iterations");
+  const long long iterations =
+      iterations_object.is_none()
+          ? (filtering ? 100 : 2)
+          : bounded_whole_number(iterations_object, function, "number_of_iterations", 0,
+                                 (std::numeric_limits<unsigned>::max)());
   const long long steps =
-      steps_object.is_none() ? (filtering ? 2 : 1) : whole_number(steps_object, function, "number_of_steps");
-  if(iterations < 0)
-    invalid(function, "number_of_iterations must not be negative");
-  if(iterations > (std::numeric_limits<unsigned>::max)())
-    invalid(function, "number_of_iterations is out of range: " + std::to_string(iterations));
-  if(steps < 0)
-    invalid(function, "number_of_steps must not be negative");
+      steps_object.is_none() ? (filtering ? 2 : 1) : bounded_whole_number(steps_object, function, "number_of_steps", 0);
   const Diffusion_options o = diffusion_options(function, sigma, time, kernel, m, coarse, false);
   Python_progress guard(std::move(progress));
   const auto np = HD::parameters::combine(

@@ -24,6 +24,7 @@
 
 #include "test_support.h"
 
+#include <algorithm>
 #include <cmath>
 #include <functional>
 #include <iterator>
@@ -661,6 +662,69 @@ void check_local_kernel_features()
                 "the free function with the local kernel differs from the class-based overload");
 }
 
+// The applications' progress_callback. On a built diffusion, decompose_field() and
+// detect_multiscale_features() report each step, forward to 1, and a callback that
+// returns false cancels them. The free functions and filter_shape() fill the bar with
+// the construction; the products after it report 1, and cancelling there throws too
+// (so that Python's Ctrl-C stops them).
+void check_applications_report_progress()
+{
+  Mesh mesh = test_support::load<Mesh>("elephant.off");
+  auto ns = mesh.add_property_map<Vertex, double>("v:ns", 0.).first;
+  HD::compute_normal_signature(mesh, ns);
+  std::vector<Mesh::Property_map<Vertex, double> > bands;
+  for(int j = 1; j <= 3; ++j)
+    bands.push_back(mesh.add_property_map<Vertex, double>("v:d" + std::to_string(j), 0.).first);
+  auto residual = mesh.add_property_map<Vertex, double>("v:residual", 0.).first;
+  std::vector<double> fractions;
+  const auto recorder = HD::parameters::progress_callback([&](double f) {
+    fractions.push_back(f);
+    return true;
+  });
+  // A callback that cancels at its call number `last` (from 0).
+  std::size_t calls = 0;
+  const auto cancel_at = [&calls](std::size_t last) {
+    calls = 0;
+    return HD::parameters::progress_callback([&calls, last](double) { return calls++ < last; });
+  };
+  const auto forward_to_one = [&fractions](std::size_t count) {
+    return fractions.size() == count && std::is_sorted(fractions.begin(), fractions.end()) && fractions.back() == 1.;
+  };
+  const auto steps = HD::parameters::steps_per_level(4);
+
+  const Diffusion diffusion(mesh);
+  HD::decompose_field(diffusion, ns, bands, residual, HD::parameters::combine(steps, recorder));
+  CHECK_MESSAGE(forward_to_one(12), "decompose_field: " << fractions.size() << " reports for 3 levels of 4 steps");
+  CHECK_THROWS(HD::decompose_field(diffusion, ns, bands, residual, HD::parameters::combine(steps, cancel_at(5))),
+               std::runtime_error, "the diffusion cancelled");
+  fractions.clear();
+  HD::detect_multiscale_features(diffusion, ns, {7, 0, 3}, recorder);
+  CHECK_MESSAGE(forward_to_one(7), "detect_multiscale_features: " << fractions.size() << " reports for 7 steps");
+  CHECK_THROWS(HD::detect_multiscale_features(diffusion, ns, {7}, cancel_at(2)), std::runtime_error,
+               "the diffusion cancelled");
+
+  // The free functions: the construction's reports, then one report of 1 per product.
+  fractions.clear();
+  HD::decompose_field(mesh, ns, bands, residual, HD::parameters::combine(steps, recorder));
+  const std::size_t construction = fractions.size() - 12;
+  CHECK(construction >= 2 && std::is_sorted(fractions.begin(), fractions.end()) && fractions[construction] == 1.);
+  CHECK_THROWS(HD::decompose_field(mesh, ns, bands, residual, HD::parameters::combine(steps, cancel_at(construction + 5))),
+               std::runtime_error, "the diffusion cancelled");
+  std::vector<Vertex> convex, concave;
+  CHECK_THROWS(HD::detect_multiscale_features(mesh, ns, std::back_inserter(convex), std::back_inserter(concave),
+                                              HD::parameters::combine(HD::parameters::number_of_steps(7),
+                                                                      cancel_at(construction + 2))),
+               std::runtime_error, "the diffusion cancelled");
+  Mesh filtered = mesh;
+  fractions.clear();
+  HD::filter_shape(filtered, std::vector<double>{1., 3., 3.}, HD::parameters::combine(steps, recorder));
+  CHECK(fractions.size() == construction + 12 && std::is_sorted(fractions.begin(), fractions.end()));
+  filtered = mesh;
+  CHECK_THROWS(HD::filter_shape(filtered, std::vector<double>{1., 3., 3.},
+                                HD::parameters::combine(steps, cancel_at(construction + 5))),
+               std::runtime_error, "the diffusion cancelled");
+}
+
 int main()
 {
   check_invariance();
@@ -674,6 +738,7 @@ int main()
   check_decomposition("elephant.off", 0.5, 5);
   check_decomposition("elephant.off", 0.5, 5, HD::Heat_kernel_method::local);
   check_local_kernel_features();
+  check_applications_report_progress();
   check_shape_filter_defaults();
   return test_support::report("test_applications");
 }

@@ -357,22 +357,6 @@ void write_text(const std::string& path, const std::string& text)
   os << text;
 }
 
-// The same points and halfedge structure, whatever other properties the meshes carry
-// (CGAL's OFF reader adds colour maps to a Surface_mesh; the tool keeps only points).
-bool same_points_and_halfedges(const Mesh& a, const Mesh& b)
-{
-  if(a.number_of_vertices() != b.number_of_vertices() || a.number_of_faces() != b.number_of_faces() ||
-     a.number_of_halfedges() != b.number_of_halfedges())
-    return false;
-  for(Vertex v : a.vertices())
-    if(a.point(v) != b.point(v) || a.halfedge(v) != b.halfedge(v))
-      return false;
-  for(auto h : a.halfedges())
-    if(a.next(h) != b.next(h) || a.target(h) != b.target(h) || a.face(h) != b.face(h))
-      return false;
-  return true;
-}
-
 // The tool's reading without the fast reader: true if the file passes its checks and
 // CGAL's soup reader and builder read it. The mesh is the one CGAL::IO::read_polygon_mesh
 // reads (checked here: the tool builds it with its own code).
@@ -388,7 +372,7 @@ bool read_like_before(const std::string& path, Mesh& mesh)
     return false;
   }
   Mesh cgal;
-  CHECK_MESSAGE(CGAL::IO::read_polygon_mesh(path, cgal) && same_points_and_halfedges(mesh, cgal),
+  CHECK_MESSAGE(CGAL::IO::read_polygon_mesh(path, cgal) && fi::identical_meshes(mesh, cgal, false),
                 path << ": the tool's checked reading and CGAL::IO::read_polygon_mesh differ");
   return true;
 }

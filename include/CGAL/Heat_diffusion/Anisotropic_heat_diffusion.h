@@ -175,14 +175,12 @@ public:
     using parameters::choose_parameter;
     using parameters::get_parameter;
     const double t = checked_time(choose_parameter(get_parameter(np, internal_np::time), 1.));
-    const internal::Progress progress(
-        choose_parameter(get_parameter(np, internal_np::progress_callback), std::function<bool(double)>()));
+    const internal::Progress progress = internal::progress_of(np);
     if constexpr(internal::can_select_spectral_kernel<NamedParameters>)
       if(method_ == Heat_kernel_method::spectral)
       {
         // One progress bar: the kernel (eigen solve) takes most of it, the regions the rest.
-        use_kernel(std::make_shared<Heat_kernel>(
-            tm, parameters::combine(np, parameters::progress_callback(progress.part(0., 0.8).as_callback()))));
+        use_kernel(std::make_shared<Heat_kernel>(tm, internal::with_progress(np, progress.part(0., 0.8))));
         build_spectral(t, progress.part(0.8, 1.));
         return;
       }
@@ -231,9 +229,7 @@ public:
   {
     // (borrowed: an owner-less shared pointer, which never deletes the kernel)
     use_kernel(std::shared_ptr<const Heat_kernel>(std::shared_ptr<const Heat_kernel>(), &kernel));
-    build_spectral(checked_time(t), internal::Progress(parameters::choose_parameter(
-                                        parameters::get_parameter(np, internal_np::progress_callback),
-                                        std::function<bool(double)>())));
+    build_spectral(checked_time(t), internal::progress_of(np));
   }
 
   /// The largest heat region, in vertices.
@@ -303,8 +299,7 @@ public:
                                        const NamedParameters& np = parameters::default_values()) const
   {
     check_field(field);
-    const internal::Progress progress(parameters::choose_parameter(
-        parameters::get_parameter(np, internal_np::progress_callback), std::function<bool(double)>()));
+    const internal::Progress progress = internal::progress_of(np);
     std::vector<Eigen::VectorXd> result(steps.size());
     const std::size_t last = steps.empty() ? 0 : *std::max_element(steps.begin(), steps.end());
     Eigen::VectorXd current = field, next(field.size());

@@ -174,8 +174,7 @@ public:
     sigma_ = choose_parameter(get_parameter(np, internal_np::sigma), internal::default_sigma);
     const double requested_m = double(choose_parameter(get_parameter(np, internal_np::number_of_eigenpairs), 150));
     scale_invariant_ = choose_parameter(get_parameter(np, internal_np::scale_invariant_kernel), false);
-    const internal::Progress progress(
-        choose_parameter(get_parameter(np, internal_np::progress_callback), std::function<bool(double)>()));
+    const internal::Progress progress = internal::progress_of(np);
     internal::checked_sigma(sigma_, "Edge_weighted_heat_kernel");
     if(!(requested_m >= 1))
       internal::throw_invalid_input("Edge_weighted_heat_kernel: number_of_eigenpairs must be positive");

@@ -59,10 +59,18 @@ namespace Heat_diffusion {
 ///     \cgalParamType{`std::size_t`, positive}
 ///     \cgalParamDefault{`5`}
 ///   \cgalParamNEnd
+///   \cgalParamNBegin{progress_callback}
+///     \cgalParamDescription{called on the calling thread after each diffusion step with the
+///       fraction of the \f$ L s \f$ steps done; returning `false` cancels the decomposition
+///       with a `std::runtime_error`}
+///     \cgalParamType{a callable `bool(double)`}
+///     \cgalParamDefault{none}
+///   \cgalParamNEnd
 /// \cgalNamedParamsEnd
 ///
 /// \throws std::invalid_argument if a value of `field` is not finite or if
 ///   `steps_per_level` is not a positive integer.
+/// \throws std::runtime_error if the `progress_callback` cancels.
 ///
 /// Complexity: \f$ L s \f$ sparse products by \f$ A_t \f$, \f$ O(L s\, \mathrm{nnz}(A_t)) \f$.
 template <typename TriangleMesh, typename GeomTraits, typename VertexFieldMap, typename DetailMapRange,
@@ -81,7 +89,8 @@ void decompose_field(const Anisotropic_heat_diffusion<TriangleMesh, GeomTraits>&
       internal::read_vertex_field(tm, diffusion.number_of_vertices(), field, index_of, "decompose_field");
 
   const std::size_t levels = std::size_t(std::distance(std::begin(detail_maps), std::end(detail_maps)));
-  const std::vector<Eigen::VectorXd> bands = internal::decompose(diffusion, f0, levels, steps_per_level);
+  const std::vector<Eigen::VectorXd> bands =
+      internal::decompose(diffusion, f0, levels, steps_per_level, internal::progress_of(np));
   std::size_t j = 0;
   for(auto detail_map : detail_maps)
     internal::write_vertex_field(tm, bands[j++], detail_map, index_of);
@@ -100,7 +109,8 @@ void decompose_field(const Anisotropic_heat_diffusion<TriangleMesh, GeomTraits>&
 ///     \cgalParamDefault{`5`}
 ///   \cgalParamNEnd
 ///   \cgalParamNBegin{time, sigma, number_of_eigenpairs, scale_invariant_kernel, progress_callback, vertex_point_map, vertex_index_map, vertex_normal_rule, geom_traits, ...}
-///     \cgalParamDescription{the diffusion, as for `Anisotropic_heat_diffusion`}
+///     \cgalParamDescription{the diffusion, as for `Anisotropic_heat_diffusion` (whose
+///       construction fills the progress bar; the products after it only check for cancellation)}
 ///   \cgalParamNEnd
 /// \cgalNamedParamsEnd
 ///
@@ -116,7 +126,8 @@ void decompose_field(const TriangleMesh& tm, const VertexFieldMap& field, const 
 {
   typedef typename CGAL::GetGeomTraits<TriangleMesh, NamedParameters>::type GeomTraits;
   const Anisotropic_heat_diffusion<TriangleMesh, GeomTraits> diffusion(tm, np);
-  decompose_field(diffusion, field, detail_maps, residual, np);
+  decompose_field(diffusion, field, detail_maps, residual,
+                  internal::with_progress(np, internal::progress_of(np).part(1., 1.)));
 }
 
 /// \ingroup PkgHeatDiffusionApplications
@@ -236,7 +247,9 @@ void filter_shape(TriangleMesh& tm, const WeightRange& weights,
     Eigen::VectorXd s(Eigen::Index(diffusion.number_of_vertices()));
     for(vertex_descriptor v : vertices(tm))
       s[Eigen::Index(index_of(v))] = ncc.normal_signature(v);
-    const Eigen::VectorXd edited = internal::synthesize(internal::decompose(diffusion, s, w.size(), steps_per_level), w);
+    // The construction fills the progress bar; the products only check for cancellation.
+    const Eigen::VectorXd edited = internal::synthesize(
+        internal::decompose(diffusion, s, w.size(), steps_per_level, internal::progress_of(np).part(1., 1.)), w);
     internal::write_vertex_field(tm, edited, signature, index_of);
   }
   reconstruct_from_normal_signature(tm, signature, parameters::combine(np, parameters::anchor_weight(anchor_weight)));

@@ -64,11 +64,15 @@ struct Features_at_scale
 ///     \cgalParamType{`double` in [0, 1]}
 ///     \cgalParamDefault{`0.8` (the paper's value)}
 ///   \cgalParamNEnd
+///   \cgalParamNBegin{progress_callback}
+///     \cgalParamDescription{the diffusion's, as for `Anisotropic_heat_diffusion::diffuse()`}
+///   \cgalParamNEnd
 /// \cgalNamedParamsEnd
 ///
 /// \returns one `Features_at_scale` per entry of `steps`, in the same order.
 ///
 /// \throws std::invalid_argument if a value of `field` is not finite or if c is not in [0, 1].
+/// \throws std::runtime_error if the `progress_callback` cancels.
 ///
 /// Complexity: \f$ O(k_{\max}\, \mathrm{nnz}(A_t)) \f$ for the diffusion (see
 /// `Anisotropic_heat_diffusion::diffuse()`) plus, per scale, one visit of every 2-ring:
@@ -97,7 +101,7 @@ detect_multiscale_features(const Anisotropic_heat_diffusion<TriangleMesh, GeomTr
 
   const internal::Vertex_adjacency adjacency =
       internal::make_vertex_adjacency(diffusion.normal_controlled_coordinates().indexed_mesh());
-  const std::vector<Eigen::VectorXd> fields = diffusion.diffuse(f0, steps);
+  const std::vector<Eigen::VectorXd> fields = diffusion.diffuse(f0, steps, np);
   std::vector<Features_at_scale<vertex_descriptor> > result(steps.size());
   std::vector<std::size_t> convex, concave;
   for(std::size_t s = 0; s < steps.size(); ++s)
@@ -152,7 +156,8 @@ detect_multiscale_features(const Anisotropic_heat_diffusion<TriangleMesh, GeomTr
 ///     \cgalParamDefault{`0.8`}
 ///   \cgalParamNEnd
 ///   \cgalParamNBegin{time, sigma, number_of_eigenpairs, scale_invariant_kernel, progress_callback, vertex_point_map, vertex_normal_rule, geom_traits, ...}
-///     \cgalParamDescription{the diffusion, as for `Anisotropic_heat_diffusion` (used for k > 0 only)}
+///     \cgalParamDescription{the diffusion, as for `Anisotropic_heat_diffusion` (used for k > 0 only;
+///       its construction fills the progress bar, the k products after it only check for cancellation)}
 ///   \cgalParamNEnd
 ///   \cgalParamNBegin{vertex_index_map}
 ///     \cgalParamDescription{a property map associating to each vertex of `tm` a unique
@@ -187,7 +192,10 @@ detect_multiscale_features(const TriangleMesh& tm, const VertexFieldMap& field, 
   if(steps != 0)
   {
     const Anisotropic_heat_diffusion<TriangleMesh, GeomTraits> diffusion(tm, np);
-    const auto features = detect_multiscale_features(diffusion, field, {std::size_t(steps)}, np);
+    // The construction fills the progress bar; the k products after it only check for
+    // cancellation.
+    const auto features = detect_multiscale_features(diffusion, field, {std::size_t(steps)},
+                                                     internal::with_progress(np, internal::progress_of(np).part(1., 1.)));
     convex_out = std::copy(features.front().convex.begin(), features.front().convex.end(), convex_out);
     concave_out = std::copy(features.front().concave.begin(), features.front().concave.end(), concave_out);
     return {convex_out, concave_out};

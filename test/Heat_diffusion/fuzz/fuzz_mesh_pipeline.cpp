@@ -205,15 +205,26 @@ std::string extension_of(const std::string& text)
   return ".off";
 }
 
-// The tool reads files: the bytes go to a file of this process's own.
-std::string write_scratch_file(const std::string& text, const std::string& extension)
+// The tool reads files: the bytes go to a file of this process's own, removed after
+// the input (a crash leaves it, next to libFuzzer's own copy of the input).
+class Scratch_file
 {
-  const std::string path = "/tmp/fuzz_mesh_pipeline_" + std::to_string(::getpid()) + extension;
-  std::ofstream os(path, std::ios::binary | std::ios::trunc);
-  os.write(text.data(), std::streamsize(text.size()));
-  require(bool(os.flush()), "cannot write " + path);
-  return path;
-}
+public:
+  Scratch_file(const std::string& text, const std::string& extension)
+    : path_("/tmp/fuzz_mesh_pipeline_" + std::to_string(::getpid()) + extension)
+  {
+    std::ofstream os(path_, std::ios::binary | std::ios::trunc);
+    os.write(text.data(), std::streamsize(text.size()));
+    require(bool(os.flush()), "cannot write " + path_);
+  }
+  Scratch_file(const Scratch_file&) = delete;
+  Scratch_file& operator=(const Scratch_file&) = delete;
+  ~Scratch_file() { std::remove(path_.c_str()); }
+  const std::string& path() const { return path_; }
+
+private:
+  std::string path_;
+};
 
 } // namespace
 
@@ -224,7 +235,8 @@ extern "C" int LLVMFuzzerTestOneInput(const std::uint8_t* data, std::size_t size
   const std::string text(reinterpret_cast<const char*>(data), size);
   const Parameters p = parameters_of(data, size);
   const std::string extension = extension_of(text);
-  const std::string path = write_scratch_file(text, extension);
+  const Scratch_file scratch(text, extension);
+  const std::string& path = scratch.path();
   namespace fi = heat_diffusion_cli::fast_input;
 
   // The tool's fast reader reads a subset of what its checked reading accepts, to the

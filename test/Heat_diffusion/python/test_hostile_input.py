@@ -283,6 +283,8 @@ def test_arguments_of_the_wrong_type():
         # refused before the bands (levels x n doubles) are allocated
         (lambda: hd.decompose(V, F, levels=10**6), "levels must be from 1 to 1000, not 1000000"),
         (lambda: hd.decompose(V, F, levels=2.0), "levels must be a whole number, not float"),
+        # checked before the diffusion is built (which would refuse sigma first)
+        (lambda: hd.decompose(V, F, levels=0, sigma=-1.0), "levels must be from 1 to 1000, not 0"),
         (lambda: hd.synthesize(np.zeros((1, 4)), np.zeros(4), None), "weights must be a sequence of numbers"),
         (lambda: hd.denoise(V, F, number_of_iterations=1.5), "number_of_iterations must be a whole number"),
         (lambda: hd.denoise(V, F, normal_sigma="wide"), "normal_sigma must be a number or None"),
@@ -298,7 +300,7 @@ def test_arguments_of_the_wrong_type():
         (lambda: hd.denoise(V, F, normal_sigma=True), "normal_sigma must be a number or None"),
         (lambda: hd.filter_shape(V, F, [1.0], anchor_weight=np.array([1.0])), "anchor_weight must be a number or None"),
         (lambda: hd.HeatDiffusion(V, F, m=10**30), "m is out of range"),
-        (lambda: hd.denoise(V, F, number_of_iterations=2**32), "number_of_iterations is out of range"),
+        (lambda: hd.denoise(V, F, number_of_iterations=2**32), "number_of_iterations must be from 0 to 4294967295, not 4294967296"),
         (lambda: hd.HeatDiffusion(V, F).diffuse(np.zeros(4), np.array([[1, 2]])), "steps must be a whole number"),
         (lambda: hd.HeatDiffusion(V, F).diffuse(np.zeros(4), 2**64), "steps is out of range"),
     ]

@@ -262,20 +262,27 @@ def test_gil_is_released(mesh):
     assert ticks > 20
 
 
-def test_keyboard_interrupt_stops_a_long_diffusion(diffusions):
-    """A diffusion of many steps stops soon after Ctrl-C, not at its end."""
+@pytest.mark.parametrize("work", ["diffuse", "features", "decompose"])
+def test_keyboard_interrupt_stops_a_long_diffusion(diffusions, work):
+    """A diffusion of many steps stops soon after Ctrl-C, not at its end, also inside
+    features() and decompose()."""
     d = diffusions("armadillo.off")
     ns = d.normal_signature()
     start = time.perf_counter()
     d.diffuse(ns, 200)
     per_200 = time.perf_counter() - start
+    long_runs = {  # each 200000 steps, 1000 times the steps timed above
+        "diffuse": lambda: d.diffuse(ns, 200000),
+        "features": lambda: d.features(ns, [0, 200000]),
+        "decompose": lambda: d.decompose(ns, levels=10, steps_per_level=20000),
+    }
     main = threading.get_ident()
     timer = threading.Timer(0.2, lambda: signal.pthread_kill(main, signal.SIGINT))
     start = time.perf_counter()
     timer.start()
     try:
         with pytest.raises(KeyboardInterrupt):
-            d.diffuse(ns, 200000)  # 1000 times the steps timed above
+            long_runs[work]()
     finally:
         timer.cancel()
     elapsed = time.perf_counter() - start

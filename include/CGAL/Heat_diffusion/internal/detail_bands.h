@@ -8,6 +8,8 @@
 #define CGAL_HEAT_DIFFUSION_INTERNAL_DETAIL_BANDS_H
 
 #include <CGAL/Heat_diffusion/internal/errors.h>
+#include <CGAL/Heat_diffusion/internal/progress.h>
+#include <CGAL/Heat_diffusion/parameters.h>
 
 #include <CGAL/number_utils.h>
 
@@ -36,16 +38,19 @@ inline std::size_t checked_steps_per_level(double steps, const char* function)
 // Eq. 24 by vertex index: bands[j] = F^(j S) - F^((j+1) S) for j < levels, and
 // bands[levels] = F^(levels S), the residual. The bands telescope, so their sum is
 // the input up to rounding, and each band sums to zero because A_t conserves heat.
+// `progress` sees every step; it cancels between two.
 template <typename Diffusion>
 std::vector<Eigen::VectorXd> decompose(const Diffusion& diffusion, const Eigen::VectorXd& field, std::size_t levels,
-                                       std::size_t steps_per_level)
+                                       std::size_t steps_per_level, const Progress& progress)
 {
   std::vector<Eigen::VectorXd> bands;
   bands.reserve(levels + 1);
   Eigen::VectorXd current = field;
   for(std::size_t j = 0; j < levels; ++j)
   {
-    Eigen::VectorXd next = diffusion.diffuse(current, steps_per_level);
+    const Progress level = progress.part(double(j) / double(levels), double(j + 1) / double(levels));
+    Eigen::VectorXd next =
+        diffusion.diffuse(current, steps_per_level, parameters::progress_callback(level.as_callback()));
     bands.push_back(current - next);
     current.swap(next);
   }

@@ -43,6 +43,7 @@ struct Generalized_eigenpairs
   bool dense_solver = false;          // true: dense fallback, no Lanczos iteration
   double shift = 0.;                  // sigma of the factorised matrix L - sigma B
   Eigen::Index subspace_dimension = 0; // Lanczos basis size (Spectra's ncv)
+  // Of the last Lanczos window only (after a widening, the wider window's):
   Eigen::Index iterations = 0;        // Lanczos restarts (Spectra's num_iterations())
   Eigen::Index operator_applications = 0;
   bool reorthonormalized = false;     // true: the final B-Gram matrix needed a correction
@@ -174,8 +175,12 @@ compute_smallest_generalized_eigenpairs(const SparseMatrix& L,
     return empty;
   }
 
-  auto report = [&progress](double fraction) {
-    if(progress && !progress(fraction))
+  // (The running maximum: a widened window restarts its count of applications, and
+  // the bar must not move back.)
+  double reported = 0.;
+  auto report = [&progress, &reported](double fraction) {
+    reported = (std::max)(reported, fraction);
+    if(progress && !progress(reported))
       throw Generalized_eigensolver_cancelled();
   };
   report(0.);

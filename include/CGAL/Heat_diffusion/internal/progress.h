@@ -4,6 +4,8 @@
 #ifndef CGAL_HEAT_DIFFUSION_INTERNAL_PROGRESS_H
 #define CGAL_HEAT_DIFFUSION_INTERNAL_PROGRESS_H
 
+#include <CGAL/Heat_diffusion/parameters.h>
+
 #include <functional>
 #include <stdexcept>
 #include <string>
@@ -60,6 +62,21 @@ private:
   std::function<bool(double)> callback_;
   double begin_ = 0., end_ = 1.;
 };
+
+// The `progress_callback` of the named parameters `np`, or none.
+template <typename NamedParameters>
+Progress progress_of(const NamedParameters& np)
+{
+  return Progress(parameters::choose_parameter(parameters::get_parameter(np, internal_np::progress_callback),
+                                               std::function<bool(double)>()));
+}
+
+// `np` with `progress` (a part of the caller's) as its progress callback.
+template <typename NamedParameters>
+auto with_progress(const NamedParameters& np, const Progress& progress)
+{
+  return parameters::combine(np, parameters::progress_callback(progress.as_callback()));
+}
 
 } // namespace internal
 } // namespace Heat_diffusion
