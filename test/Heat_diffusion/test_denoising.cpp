@@ -34,12 +34,12 @@
 #include <algorithm>
 #include <cmath>
 #include <functional>
-#include <iterator>
-#include <utility>
 #include <iostream>
+#include <iterator>
 #include <limits>
 #include <sstream>
 #include <string>
+#include <utility>
 #include <vector>
 
 namespace HD = CGAL::Heat_diffusion;
@@ -327,6 +327,20 @@ void test_no_collapse()
   }
 }
 
+// The package-frame points `points` (by the vertex index of `ncc`, on the mesh of
+// `ncc`) written to the points of `mesh`, a copy of that mesh, as denoise_mesh()
+// writes its result.
+auto point_writer(Mesh& mesh, const HD::Normal_controlled_coordinates<Mesh>& ncc)
+{
+  return [&mesh, &ncc](const std::vector<Eigen::Vector3d>& points) {
+    for(auto v : mesh.vertices())
+    {
+      const Eigen::Vector3d p = ncc.indexed_mesh().to_user_frame(points[ncc.vertex_index(v)]);
+      mesh.point(v) = Epick::Point_3(p.x(), p.y(), p.z());
+    }
+  };
+}
+
 // The untangling of the denoised mesh (untangle_self_intersections()). Noise in random
 // directions folds faces over within the surface, which the filter does not always undo:
 // fandisk and couplingdown at 0.5 mean edge length (seed 6, as the benchmark) kept 479
@@ -353,13 +367,7 @@ void test_untangling()
     const std::vector<Eigen::Vector3d> filtered =
         HD::internal::filter_normals(indexed, HD::internal::Normal_filtering_options(), HD::internal::Progress());
     Mesh untangled = noisy;
-    auto write_back = [&](const std::vector<Eigen::Vector3d>& points) {
-      for(auto v : untangled.vertices())
-      {
-        const Eigen::Vector3d p = indexed.to_user_frame(points[ncc.vertex_index(v)]);
-        untangled.point(v) = Epick::Point_3(p.x(), p.y(), p.z());
-      }
-    };
+    const auto write_back = point_writer(untangled, ncc);
     write_back(filtered);
     const Mesh before = untangled;
     std::vector<Eigen::Vector3d> points = filtered;
@@ -402,13 +410,7 @@ void test_local_intersection_search()
   std::vector<Eigen::Vector3d> points =
       HD::internal::filter_normals(indexed, HD::internal::Normal_filtering_options(), HD::internal::Progress());
   auto vertex_index = [&](Mesh::Vertex_index v) { return ncc.vertex_index(v); };
-  auto write_back = [&](const std::vector<Eigen::Vector3d>& result) {
-    for(auto v : mesh.vertices())
-    {
-      const Eigen::Vector3d p = indexed.to_user_frame(result[ncc.vertex_index(v)]);
-      mesh.point(v) = Epick::Point_3(p.x(), p.y(), p.z());
-    }
-  };
+  const auto write_back = point_writer(mesh, ncc);
   typedef HD::internal::Intersecting_face_pairs<Mesh, Mesh::Property_map<Mesh::Vertex_index, Epick::Point_3>, Epick,
                                                 decltype(vertex_index)>
       Pairs;
@@ -503,7 +505,8 @@ void test_needle_copy_weight()
 // The matrices of the flow and of the needle fit, assembled in place over the vertices'
 // one-rings (Vertex_block_matrix) and applied face by face (Normal_fit_system), against
 // the textbook assembly from triplets, on blade at 0.3 along the normals (needles) and
-// on a mesh of three components (two fandisks and an elephant): the cotangent stiffness
+// on a mesh of three components (two fandisks and an elephant) and on an open one
+// (elephant with holes: the boundary's one-sided stars): the cotangent stiffness
 // matrix is the triplets' to the bit, symmetric with rows summing to 0; the fit's
 // product and diagonal blocks are those of its assembled matrix, which is the
 // triplets'; the fit (conjugate gradients on the product) solves the assembled system;
@@ -515,7 +518,9 @@ void test_vertex_systems()
   Mesh components = test_support::load<Mesh>("fandisk.off");
   CGAL::copy_face_graph(test_support::load<Mesh>("elephant.off"), components);
   CGAL::copy_face_graph(test_support::load<Mesh>("fandisk.off"), components);
-  for(const Mesh* mesh : {&blade, &components})
+  const Mesh open = test_support::load<Mesh>("elephant-with-holes.off");
+  CHECK(!CGAL::is_closed(open));
+  for(const Mesh* mesh : std::vector<const Mesh*>{&blade, &components, &open})
   {
     const HD::Normal_controlled_coordinates<Mesh> ncc(*mesh);
     const HD::internal::Indexed_mesh& indexed = ncc.indexed_mesh();
@@ -549,7 +554,7 @@ void test_vertex_systems()
     std::vector<Eigen::Vector3d> smoothed, normals, centroids, fitted;
     std::vector<double> areas;
     const double time = 4 * std::pow(HD::internal::mean_edge_length(indexed), 2);
-    CHECK(HD::internal::implicit_smoothing(indexed, points, time, smoothed));
+    CHECK(HD::internal::Cotangent_flow(indexed, points).smooth(time, 1, smoothed));
     // A flow restarted from other points, after it has factorised the system of its
     // first ones, is the flow of the new points, to the bit (the relinearised flow
     // restarts one flow for each of its steps).
@@ -615,7 +620,8 @@ void test_vertex_systems()
     const Eigen::VectorXd exact = direct.solve(rhs);
     const double residual = (assembled * solution - rhs).norm() / rhs.norm(),
                  distance = (solution - exact).norm() / exact.norm();
-    std::cout << (mesh == &blade ? "blade, noise 0.3" : "three components") << ": the fit's relative residual "
+    std::cout << (mesh == &blade ? "blade, noise 0.3" : mesh == &open ? "elephant with holes" : "three components")
+              << ": the fit's relative residual "
               << residual << ", relative distance to the direct solve " << distance << std::endl;
     CHECK_MESSAGE(residual < 1e-9 && distance < 1e-6, "fit: residual " << residual << ", distance " << distance);
   }
@@ -747,8 +753,8 @@ void test_component_volume_restoration()
   CHECK_MESSAGE(labels.size() == 3, "three components: " << labels.size() << " components");
 
   std::vector<Eigen::Vector3d> points;
-  CHECK(HD::internal::implicit_smoothing(indexed, reference, 4. * std::pow(HD::internal::mean_edge_length(indexed), 2),
-                                         points, 8));
+  CHECK(HD::internal::Cotangent_flow(indexed, reference)
+            .smooth(4. * std::pow(HD::internal::mean_edge_length(indexed), 2), 8, points));
   for(std::size_t v = 0; v < points.size(); ++v)
   {
     const double scale = 0.6 + 0.3 * double(std::lower_bound(labels.begin(), labels.end(), component[v]) - labels.begin());

@@ -170,15 +170,6 @@ private:
   bool analyzed_ = false;
 };
 
-// The flow of `points` for `time` in `steps` steps (see Cotangent_flow). Returns false,
-// leaving `result` untouched, if the factorisation or a solve fails.
-inline bool implicit_smoothing(const Indexed_mesh& mesh, const std::vector<Eigen::Vector3d>& points, double time,
-                               std::vector<Eigen::Vector3d>& result, std::size_t steps = 1)
-{
-  Cotangent_flow flow(mesh, points);
-  return flow.smooth(time, steps, result);
-}
-
 // The smoothings that denoise (the smoothed copy of a mesh of needles, and the flow of
 // thin walls in filter_normals()) take this many implicit steps of the same total time:
 // they smooth the shape's low frequencies as one step does (by 1 - t lambda to first
