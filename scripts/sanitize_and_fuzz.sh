@@ -60,11 +60,11 @@ status=0
 "$build/bin/fuzz_mesh_pipeline" -max_total_time="$seconds" -max_len=2048 -timeout=10 -rss_limit_mb=2048 \
     -print_final_stats=1 -artifact_prefix="$fuzz_dir/regressions/" \
     "$work_corpus" "$fuzz_dir/corpus" >"$log" 2>&1 || status=$?
-grep -E '^#[0-9]+[[:space:]]+(INITED|DONE)|^Done|stat::number_of_executed_units|stat::peak_rss' "$log" || true
+grep -aE '^#[0-9]+[[:space:]]+(INITED|DONE)|^Done|stat::number_of_executed_units|stat::peak_rss' "$log" || true
 if [ "$status" -ne 0 ]; then
   tail -n 60 "$log"
   echo "fuzz_mesh_pipeline failed (exit $status); the input is kept in $fuzz_dir/regressions/:"
-  grep -E 'Test unit written to' "$log" || true
+  grep -aE 'Test unit written to' "$log" || true
   exit 1
 fi
 stage_done "fuzzing"
