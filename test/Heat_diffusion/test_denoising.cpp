@@ -142,27 +142,36 @@ void test_quality()
     const Mesh clean = test_support::load<Mesh>(c.file);
     Mesh noisy = clean;
     test_support::add_normal_noise(noisy, c.noise, 5);
-    Mesh denoised = noisy, guided = noisy;
+    Mesh denoised = noisy;
     HD::denoise_mesh(denoised);
-    test_support::baselines::guided_normal_filtering(guided);
-
-    std::string best_bilateral_setting;
     const double noisy_mad = mean_angle_deviation(clean, noisy);
     const double denoised_mad = mean_angle_deviation(clean, denoised);
-    const double guided_mad = mean_angle_deviation(clean, guided);
-    const double bilateral_mad = best_bilateral(clean, noisy, best_bilateral_setting);
     std::cout << c.file << ", noise " << c.noise << " mean edge length: MAD noisy " << noisy_mad << ", denoise_mesh "
-              << denoised_mad << ", GNF " << guided_mad << ", best bilateral " << bilateral_mad << " ("
-              << best_bilateral_setting << ")" << std::endl;
+              << denoised_mad;
+    // The baselines are test code: under the sanitizers, where they take most of the
+    // time, the package's result is checked against its bounds alone.
+    const bool compare = !test_support::under_sanitizers;
+    Mesh guided = noisy;
+    std::string best_bilateral_setting;
+    double guided_mad = 0, bilateral_mad = 0;
+    if(compare)
+    {
+      test_support::baselines::guided_normal_filtering(guided);
+      guided_mad = mean_angle_deviation(clean, guided);
+      bilateral_mad = best_bilateral(clean, noisy, best_bilateral_setting);
+      std::cout << ", GNF " << guided_mad << ", best bilateral " << bilateral_mad << " (" << best_bilateral_setting
+                << ")";
+    }
+    std::cout << std::endl;
 
     CHECK(denoised.number_of_vertices() == clean.number_of_vertices());
     CHECK(denoised.number_of_faces() == clean.number_of_faces());
     CHECK(all_finite(denoised));
     CHECK_MESSAGE(denoised_mad < c.bound, c.file << ": " << denoised_mad << " vs the bound " << c.bound);
     CHECK_MESSAGE(denoised_mad < noisy_mad, c.file << ": " << denoised_mad << " vs noisy " << noisy_mad);
-    if(c.beats_guided)
+    if(compare && c.beats_guided)
       CHECK_MESSAGE(denoised_mad < guided_mad, c.file << ": " << denoised_mad << " vs GNF " << guided_mad);
-    if(c.beats_bilateral)
+    if(compare && c.beats_bilateral)
       CHECK_MESSAGE(denoised_mad < bilateral_mad, c.file << ": " << denoised_mad << " vs bilateral " << bilateral_mad);
     if(c.keeps_volume)
     {
@@ -170,8 +179,9 @@ void test_quality()
       const double change = PMP::volume(denoised) / PMP::volume(clean) - 1;
       CHECK_MESSAGE(std::abs(change) < 0.01, c.file << ": volume change " << change);
       // EPICK: self-intersections are decided with exact predicates.
-      CHECK_MESSAGE(count_self_intersections(denoised) <= count_self_intersections(guided),
-                    c.file << ": more intersecting faces than GNF's result");
+      if(compare)
+        CHECK_MESSAGE(count_self_intersections(denoised) <= count_self_intersections(guided),
+                      c.file << ": more intersecting faces than GNF's result");
     }
   }
 }

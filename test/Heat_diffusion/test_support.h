@@ -56,6 +56,16 @@ inline int report(const std::string& suite)
   return failures() == 0 ? EXIT_SUCCESS : EXIT_FAILURE;
 }
 
+// Whether the suite is built with the sanitizers (scripts/sanitize_and_fuzz.sh), where
+// it runs some 10 times slower (ASan at -O1). There the suites that compare the package
+// with test-only baselines, or repeat a check on a larger mesh of the same kind, run the
+// package's code on the smaller cases only; the release suite runs every case.
+#ifdef CGAL_HEAT_DIFFUSION_TEST_UNDER_SANITIZERS
+constexpr bool under_sanitizers = true;
+#else
+constexpr bool under_sanitizers = false;
+#endif
+
 inline std::string data_path(const std::string& name)
 {
   return std::string(CGAL_HEAT_DIFFUSION_DATA_DIR) + "/" + name;
