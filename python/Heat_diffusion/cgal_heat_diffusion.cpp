@@ -302,8 +302,9 @@ py::tuple compare_mesh_constructions(py::object V_object, py::object F_object)
   return py::make_tuple(true, py::none());
 }
 
-// A field given by input vertex order: a 1-D float64 array of n values (finiteness
-// is checked by the package, whose message names the vertex).
+// A field given by input vertex order: a 1-D float64 array of n finite values. (The
+// package checks finiteness too, but its message names its C++ function, and, on
+// meshes it renumbers, its own index of the vertex.)
 std::vector<double> field_array(py::handle object, std::size_t n, const std::string& function,
                                 const std::string& name = "field")
 {
@@ -317,6 +318,13 @@ std::vector<double> field_array(py::handle object, std::size_t n, const std::str
   if(!is_float64(a))
     invalid(function, name + " must be float64, not " + dtype_text(a));
   const double* p = static_cast<const double*>(a.data());
+  for(std::size_t i = 0; i < n; ++i)
+    if(!std::isfinite(p[i]))
+    {
+      std::ostringstream os;
+      os << name << " value at vertex " << i << " is " << p[i] << ", not a finite number";
+      invalid(function, os.str());
+    }
   return std::vector<double>(p, p + n);
 }
 
