@@ -16,6 +16,8 @@
 #include <CGAL/Heat_diffusion/internal/vector_clones.h>
 #include <CGAL/Heat_diffusion/internal/vertex_clusters.h>
 
+#include <CGAL/assertions.h>
+
 #include <Eigen/Core>
 #include <Eigen/OrderingMethods>
 #include <Eigen/Sparse>
@@ -158,6 +160,8 @@ public:
     : mesh_(mesh), stiffness_(stiffness), mass_(mass), time_(time), tolerance_(tolerance), mass_kind_(mass_kind)
   {
     const std::size_t n = mesh.number_of_vertices();
+    // (the patch matrices are read from the one pattern)
+    CGAL_precondition(stiffness.rows() == Eigen::Index(n) && have_the_same_pattern(stiffness, mass));
     lumped_mass_.assign(n, 0.);
     for(Eigen::Index j = 0; j < mass.outerSize(); ++j)
       for(Sparse_matrix::InnerIterator it(mass, j); it; ++it)
@@ -188,6 +192,17 @@ public:
         cluster_of_[cluster_order_[a]] = std::uint32_t(c);
         position_in_cluster_[cluster_order_[a]] = std::uint32_t(a - begin[c]);
       }
+  }
+
+  // Whether `a` and `b` are compressed, of the same size and with the same pattern (the
+  // one-ring pattern of assemble_heat_operators()).
+  static bool have_the_same_pattern(const Sparse_matrix& a, const Sparse_matrix& b)
+  {
+    if(!a.isCompressed() || !b.isCompressed() || a.rows() != b.rows() || a.cols() != b.cols() ||
+       a.nonZeros() != b.nonZeros())
+      return false;
+    return std::equal(a.outerIndexPtr(), a.outerIndexPtr() + a.outerSize() + 1, b.outerIndexPtr()) &&
+           std::equal(a.innerIndexPtr(), a.innerIndexPtr() + a.nonZeros(), b.innerIndexPtr());
   }
 
   double time() const { return time_; }
@@ -360,8 +375,8 @@ private:
     return w.stamp[k] == w.generation && w.local[k] != not_in_patch;
   }
 
-  // L_P and B_P on the union of their patterns (a zero condition outside), and the
-  // patch heat weights B_P 1.
+  // L_P and B_P (a zero condition outside), on their common pattern, and the patch
+  // heat weights B_P 1.
   void extract_patch_matrices(Workspace& w) const
   {
     const std::size_t p = w.patch.size();
@@ -371,38 +386,19 @@ private:
     w.mass_value.clear();
     w.patch_heat.assign(p, 0.);
     const bool lumped = mass_kind_ == Local_kernel_mass::lumped;
+    const auto* column_start = stiffness_.outerIndexPtr();
+    const auto* rows = stiffness_.innerIndexPtr();
     for(std::size_t a = 0; a < p; ++a)
     {
-      const Eigen::Index global = Eigen::Index(w.patch[a]);
-      Sparse_matrix::InnerIterator l(stiffness_, global), b(mass_, global);
-      // merge the two sorted columns
-      while(l || b)
+      const std::size_t global = w.patch[a];
+      for(auto q = column_start[global]; q < column_start[global + 1]; ++q)
       {
-        Eigen::Index r;
-        double lv = 0, bv = 0;
-        if(l && (!b || l.row() <= b.row()))
-        {
-          r = l.row();
-          lv = l.value();
-          if(b && b.row() == r)
-          {
-            bv = b.value();
-            ++b;
-          }
-          ++l;
-        }
-        else
-        {
-          r = b.row();
-          bv = b.value();
-          ++b;
-        }
-        if(!in_patch(w, std::size_t(r)))
+        const std::size_t r = std::size_t(rows[q]);
+        if(!in_patch(w, r))
           continue;
-        if(lumped)
-          bv = std::size_t(r) == std::size_t(global) ? lumped_mass_[std::size_t(global)] : 0.;
-        w.row.push_back(int(w.local[std::size_t(r)]));
-        w.stiffness_value.push_back(lv);
+        const double bv = !lumped ? mass_.valuePtr()[q] : r == global ? lumped_mass_[global] : 0.;
+        w.row.push_back(int(w.local[r]));
+        w.stiffness_value.push_back(stiffness_.valuePtr()[q]);
         w.mass_value.push_back(bv);
         w.patch_heat[a] += bv;  // B_P symmetric: column sums are row sums
       }
