@@ -38,9 +38,9 @@ cmake -S . -B "$build" -G Ninja -DCMAKE_BUILD_TYPE=Debug -DCGAL_DO_NOT_WARN_ABOU
 # enhancement and denoising through test_cli (every subcommand, both kernels) and the
 # fuzz target, the kernel and diffusion through test_heat_kernel_and_diffusion.
 # Every other suite runs, and only what they need is built; built with
-# CGAL_HEAT_DIFFUSION_TEST_UNDER_SANITIZERS, they leave out their larger meshes of a kind
-# already tested (armadillo beside fandisk) and the comparisons with test-only baselines
-# (test_support::under_sanitizers).
+# CGAL_HEAT_DIFFUSION_TEST_UNDER_SANITIZERS, they leave out the checks that a smaller
+# mesh runs through the same code (armadillo) and the comparisons with test-only
+# baselines (test_support::under_sanitizers).
 excluded='^(doc_heat_diffusion|doc_heat_diffusion_in_browser|install_heat_diffusion|subdirectory_heat_diffusion|compile_fail_parameters|test_coarse_level|test_local_heat_kernel|test_applications)$'
 targets=(heat_diffusion fuzz_mesh_pipeline)
 for t in $(cd "$build" && ctest -N | sed -n 's/^ *Test *#[0-9]*: //p' | grep -vE "$excluded"); do

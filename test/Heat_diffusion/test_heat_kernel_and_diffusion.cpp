@@ -192,7 +192,9 @@ void check_real_meshes()
 {
   for(const char* name : {"fandisk.off", "armadillo.off"})
   {
-    // (under the sanitizers, on fandisk only: the same code, a quarter of the vertices)
+    // (under the sanitizers, on fandisk only: the same code on a quarter of the
+    // vertices; organic meshes run there in check_operator_normalizations() and
+    // check_convergence_to_the_mean())
     if(test_support::under_sanitizers && std::string(name) == "armadillo.off")
       continue;
     const Mesh mesh = test_support::load<Mesh>(name);

@@ -57,9 +57,9 @@ inline int report(const std::string& suite)
 }
 
 // Whether the suite is built with the sanitizers (scripts/sanitize_and_fuzz.sh), where
-// it runs some 10 times slower (ASan at -O1). There the suites that compare the package
-// with test-only baselines, or repeat a check on a larger mesh of the same kind, run the
-// package's code on the smaller cases only; the release suite runs every case.
+// it runs some 10 times slower (ASan at -O1). There the suites leave out the comparisons
+// with test-only baselines and the checks that a smaller mesh runs through the same code
+// (armadillo); the release suite runs every case.
 #ifdef CGAL_HEAT_DIFFUSION_TEST_UNDER_SANITIZERS
 constexpr bool under_sanitizers = true;
 #else
