@@ -673,11 +673,14 @@ py::list features_list(const std::vector<HD::Features_at_scale<Vertex> >& featur
 class Heat_diffusion
 {
 public:
+  // (`function`: the name of the errors, that of the free function that builds the
+  // diffusion, if one does)
   Heat_diffusion(py::object V, py::object F, double sigma, double time, py::object kernel, py::object m,
-                 py::object coarse, bool scale_invariant, py::object normalization, py::object progress)
-    : mesh_(make_mesh(V, F, "HeatDiffusion"))
+                 py::object coarse, bool scale_invariant, py::object normalization, py::object progress,
+                 const std::string& function = "HeatDiffusion")
+    : mesh_(make_mesh(V, F, function))
   {
-    Diffusion_options o = diffusion_options("HeatDiffusion", sigma, time, kernel, m, coarse, scale_invariant);
+    Diffusion_options o = diffusion_options(function, sigma, time, kernel, m, coarse, scale_invariant);
     // operator_normalization: 'balanced' (the default, doubly stochastic) or 'columns' (the paper's)
     if(!normalization.is_none())
     {
@@ -687,7 +690,7 @@ public:
       else if(name == "columns")
         o.normalization = HD::Operator_normalization::columns;
       else
-        invalid("HeatDiffusion", "normalization must be 'balanced', 'columns' or None, not " +
+        invalid(function, "normalization must be 'balanced', 'columns' or None, not " +
                                      (name.empty() ? type_name(normalization) : "'" + name + "'"));
     }
     Python_progress guard(std::move(progress));
@@ -795,10 +798,18 @@ public:
 
   py::list features(py::object field, py::object steps, double feature_threshold) const
   {
+    return features_as("HeatDiffusion.features", field, steps, feature_threshold);
+  }
+
+  // features(), with errors in the name of `function` (the method, or the free function
+  // that calls it)
+  py::list features_as(const std::string& function, py::object field, py::object steps,
+                       double feature_threshold) const
+  {
     bool single = false;
-    const std::vector<std::size_t> ks = step_list(steps, "HeatDiffusion.features", single);
+    const std::vector<std::size_t> ks = step_list(steps, function, single);
     std::vector<double> values = field.is_none() ? normal_signature().cast<std::vector<double> >()
-                                                 : field_array(field, number_of_vertices(), "HeatDiffusion.features");
+                                                 : field_array(field, number_of_vertices(), function);
     const auto features = interruptible([&](const auto& progress) {
       return HD::detect_multiscale_features(
           *diffusion_, Input_order_field{values.data()}, ks,
@@ -809,12 +820,18 @@ public:
 
   py::tuple decompose(py::object field, py::object levels_object, py::object steps_object) const
   {
-    const std::size_t levels = checked_levels(levels_object, "HeatDiffusion.decompose");
+    return decompose_as("HeatDiffusion.decompose", field, levels_object, steps_object);
+  }
+
+  // decompose(), with errors in the name of `function`
+  py::tuple decompose_as(const std::string& function, py::object field, py::object levels_object,
+                         py::object steps_object) const
+  {
+    const std::size_t levels = checked_levels(levels_object, function);
     const std::size_t n = number_of_vertices();
     std::vector<double> values = field.is_none() ? normal_signature().cast<std::vector<double> >()
-                                                 : field_array(field, n, "HeatDiffusion.decompose");
-    const std::optional<long long> steps_per_level =
-        optional_whole_number(steps_object, "HeatDiffusion.decompose", "steps_per_level");
+                                                 : field_array(field, n, function);
+    const std::optional<long long> steps_per_level = optional_whole_number(steps_object, function, "steps_per_level");
     py::array_t<double> bands({py::ssize_t(levels), py::ssize_t(n)});
     py::array_t<double> residual(static_cast<py::ssize_t>(n));
     double* band_data = bands.mutable_data();
@@ -871,17 +888,21 @@ py::list multiscale_features(py::object V, py::object F, py::object field, py::o
                              double sigma, double time, py::object kernel, py::object m, py::object coarse,
                              bool scale_invariant, py::object progress)
 {
-  const Heat_diffusion diffusion(V, F, sigma, time, kernel, m, coarse, scale_invariant, py::none(), progress);
-  return diffusion.features(field, steps, feature_threshold);
+  const std::string function = "multiscale_features";
+  bool single = false;
+  step_list(steps, function, single);  // before the diffusion is built
+  const Heat_diffusion diffusion(V, F, sigma, time, kernel, m, coarse, scale_invariant, py::none(), progress, function);
+  return diffusion.features_as(function, field, steps, feature_threshold);
 }
 
 py::tuple decompose(py::object V, py::object F, py::object field, py::object levels, py::object steps_per_level,
                     double sigma, double time, py::object kernel, py::object m, py::object coarse,
                     bool scale_invariant, py::object progress)
 {
-  checked_levels(levels, "decompose");  // before the diffusion is built
-  const Heat_diffusion diffusion(V, F, sigma, time, kernel, m, coarse, scale_invariant, py::none(), progress);
-  return diffusion.decompose(field, levels, steps_per_level);
+  const std::string function = "decompose";
+  checked_levels(levels, function);  // before the diffusion is built
+  const Heat_diffusion diffusion(V, F, sigma, time, kernel, m, coarse, scale_invariant, py::none(), progress, function);
+  return diffusion.decompose_as(function, field, levels, steps_per_level);
 }
 
 // Eq. 26 on arrays: residual + sum_j weights[j] bands[j].

@@ -2,7 +2,6 @@
 # package's own, or the binding's for what never reaches the package), never a crash.
 # The hostile corpus of test/Heat_diffusion/data goes through it too.
 import os
-import re
 import subprocess
 import sys
 import tempfile
@@ -161,13 +160,17 @@ def test_field_errors_name_the_row_on_large_meshes(mesh):
     d = hd.HeatDiffusion(V, F)
     bad = d.normal_signature()
     bad[12345] = np.nan
-    for name, function in (("diffuse", lambda: d.diffuse(bad, 1)), ("features", lambda: d.features(bad, [0])),
-                           ("decompose", lambda: d.decompose(bad, 1)),
-                           ("decompose", lambda: hd.decompose(V, F, bad, levels=1))):
+    # (the free functions name themselves, not the method they call)
+    for name, function in (("HeatDiffusion.diffuse", lambda: d.diffuse(bad, 1)),
+                           ("HeatDiffusion.features", lambda: d.features(bad, [0])),
+                           ("HeatDiffusion.decompose", lambda: d.decompose(bad, 1)),
+                           ("decompose", lambda: hd.decompose(V, F, bad, levels=1)),
+                           ("multiscale_features", lambda: hd.multiscale_features(V, F, bad, steps=[0]))):
         with pytest.raises(ValueError) as error:
             function()
         message = str(error.value)
-        assert re.search(r"\." + name + r": field value at vertex 12345 is nan, not a finite number$", message), message
+        assert message.startswith("cgal_heat_diffusion." + name + ": field value at vertex 12345 is nan, not a finite"
+                                  " number"), message
         assert "vertex_index" not in message and "CGAL::" not in message, message
 
 
@@ -274,6 +277,29 @@ def test_hostile_file(name):
             f = result.diffuse(result.normal_signature(), [0, 5])
             assert np.all(np.isfinite(f))
             assert abs(f[1].sum() - f[0].sum()) <= 1e-12 * max(1.0, np.abs(f[0]).sum())
+
+
+def test_free_functions_name_themselves_in_errors():
+    # multiscale_features() and decompose() build a HeatDiffusion and call its method: the
+    # binding's own errors carry the free function's name, not the class's or the
+    # method's. (The package's errors carry "CGAL::Heat_diffusion:" wherever they come from.)
+    V, F = TETRA_V, TETRA_F
+    cases = [
+        (lambda: hd.decompose(V, F, kernel=1), "decompose", "kernel"),
+        (lambda: hd.decompose(V, F, m="many"), "decompose", "m must"),
+        (lambda: hd.decompose(V[:, :2], F), "decompose", "V"),
+        (lambda: hd.decompose(V, F, steps_per_level="5"), "decompose", "steps_per_level"),
+        (lambda: hd.multiscale_features(V, F, kernel="fast"), "multiscale_features", "kernel"),
+        (lambda: hd.multiscale_features(V, F, coarse=[4]), "multiscale_features", "coarse"),
+        (lambda: hd.multiscale_features(V, F.astype(np.float64)), "multiscale_features", "F"),
+        # the steps are checked before the diffusion is built (which would refuse sigma first)
+        (lambda: hd.multiscale_features(V, F, steps=-1, sigma=-1.0), "multiscale_features", "steps"),
+    ]
+    for function, name, argument in cases:
+        with pytest.raises(ValueError) as error:
+            function()
+        message = str(error.value)
+        assert message.startswith("cgal_heat_diffusion." + name + ": ") and argument in message, message
 
 
 def test_arguments_of_the_wrong_type():
