@@ -19,6 +19,7 @@
 #include <algorithm>
 #include <cmath>
 #include <cstddef>
+#include <optional>
 #include <type_traits>
 #include <vector>
 
@@ -272,10 +273,12 @@ constexpr std::size_t relinearised_steps = 3;
 // The relinearised flow: `steps` implicit steps of time t / steps, each with the
 // operator of the points it starts from (the semi-implicit mean curvature flow of
 // Desbrun et al. 1999), instead of the operator of the input for all of them. `flow` is
-// the flow of the points it starts from, which takes the first step; `later_steps`, a
-// flow of the same mesh, is restarted for each of the others. Returns false, leaving
-// `result` untouched, if a factorisation or a solve fails.
-inline bool relinearised_smoothing(Cotangent_flow& flow, Cotangent_flow& later_steps, double time, std::size_t steps,
+// the flow of `mesh` from the points it starts from, which takes the first step;
+// `later_steps` takes the others, restarted from the points of each (made at the first:
+// from calls to calls, it keeps the ordering of its factorisation). Returns false,
+// leaving `result` untouched, if a factorisation or a solve fails.
+inline bool relinearised_smoothing(const Indexed_mesh& mesh, Cotangent_flow& flow,
+                                   std::optional<Cotangent_flow>& later_steps, double time, std::size_t steps,
                                    std::vector<Eigen::Vector3d>& result)
 {
   steps = (std::max)(steps, std::size_t(1));
@@ -284,8 +287,11 @@ inline bool relinearised_smoothing(Cotangent_flow& flow, Cotangent_flow& later_s
     return false;
   for(std::size_t step = 1; step < steps; ++step)
   {
-    later_steps.restart(current);
-    if(!later_steps.smooth(time / double(steps), 1, next))
+    if(later_steps)
+      later_steps->restart(current);
+    else
+      later_steps.emplace(mesh, current);
+    if(!later_steps->smooth(time / double(steps), 1, next))
       return false;
     current.swap(next);
   }
@@ -371,11 +377,11 @@ inline bool smooth_relinearised_until_residual_is_correlated(const Indexed_mesh&
                                                              Cotangent_flow& flow,
                                                              std::vector<Eigen::Vector3d>& result, double& time)
 {
-  Cotangent_flow later_steps(mesh, mesh.points);
+  std::optional<Cotangent_flow> later_steps;
   return smooth_until_residual_is_correlated(
       mesh, noise,
       [&](double t, std::vector<Eigen::Vector3d>& smoothed) {
-        return relinearised_smoothing(flow, later_steps, t, relinearised_steps, smoothed);
+        return relinearised_smoothing(mesh, flow, later_steps, t, relinearised_steps, smoothed);
       },
       result, time);
 }
