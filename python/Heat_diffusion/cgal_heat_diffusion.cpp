@@ -673,8 +673,8 @@ py::list features_list(const std::vector<HD::Features_at_scale<Vertex> >& featur
 class Heat_diffusion
 {
 public:
-  // (`function`: the name of the errors, that of the free function that builds the
-  // diffusion, if one does)
+  // `function` names the caller in the binding's errors: the class, or the free
+  // function that builds the diffusion.
   Heat_diffusion(py::object V, py::object F, double sigma, double time, py::object kernel, py::object m,
                  py::object coarse, bool scale_invariant, py::object normalization, py::object progress,
                  const std::string& function = "HeatDiffusion")
@@ -691,7 +691,7 @@ public:
         o.normalization = HD::Operator_normalization::columns;
       else
         invalid(function, "normalization must be 'balanced', 'columns' or None, not " +
-                                     (name.empty() ? type_name(normalization) : "'" + name + "'"));
+                              (name.empty() ? type_name(normalization) : "'" + name + "'"));
     }
     Python_progress guard(std::move(progress));
     const auto np = diffusion_parameters(o, guard.callback());

@@ -274,9 +274,10 @@ constexpr std::size_t relinearised_steps = 3;
 // operator of the points it starts from (the semi-implicit mean curvature flow of
 // Desbrun et al. 1999), instead of the operator of the input for all of them. `flow` is
 // the flow of `mesh` from the points it starts from, which takes the first step;
-// `later_steps` takes the others, restarted from the points of each (made at the first:
-// from calls to calls, it keeps the ordering of its factorisation). Returns false,
-// leaving `result` untouched, if a factorisation or a solve fails.
+// `later_steps` takes the others, restarted from the points of each. It is made at the
+// first later step and kept from call to call, so that the ordering of its
+// factorisation is computed once. Returns false, leaving `result` untouched, if a
+// factorisation or a solve fails.
 inline bool relinearised_smoothing(const Indexed_mesh& mesh, Cotangent_flow& flow,
                                    std::optional<Cotangent_flow>& later_steps, double time, std::size_t steps,
                                    std::vector<Eigen::Vector3d>& result)
