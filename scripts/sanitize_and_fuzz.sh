@@ -42,10 +42,15 @@ cmake -S . -B "$build" -G Ninja -DCMAKE_BUILD_TYPE=Debug -DCGAL_DO_NOT_WARN_ABOU
 # mesh runs through the same code (armadillo) and the comparisons with test-only
 # baselines (test_support::under_sanitizers).
 excluded='^(doc_heat_diffusion|doc_heat_diffusion_in_browser|install_heat_diffusion|subdirectory_heat_diffusion|compile_fail_parameters|test_coarse_level|test_local_heat_kernel|test_applications)$'
+# The programs those tests run (a test program holds several suites), found in CTest's
+# own list: the tool and the fuzz target, and the test programs in $build/bin/.
 targets=(heat_diffusion fuzz_mesh_pipeline)
-for t in $(cd "$build" && ctest -N | sed -n 's/^ *Test *#[0-9]*: //p' | grep -vE "$excluded"); do
-  case $t in test_cli|test_hostile_cli|fuzz_regressions) ;; *) targets+=("$t") ;; esac
-done
+targets+=($(cd "$build" && ctest --show-only=json-v1 -E "$excluded" | python3 -c '
+import json, os, sys
+bin_dir = os.path.realpath("bin")
+programs = {os.path.basename(test["command"][0]) for test in json.load(sys.stdin)["tests"]
+            if "command" in test and os.path.dirname(os.path.realpath(test["command"][0])) == bin_dir}
+print(" ".join(sorted(programs - {"heat_diffusion", "fuzz_mesh_pipeline"})))'))
 cmake --build "$build" -j "$(nproc)" --target "${targets[@]}"
 stage_done "sanitizer build"
 

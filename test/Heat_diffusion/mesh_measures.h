@@ -8,6 +8,7 @@
 #ifndef CGAL_HEAT_DIFFUSION_MESH_MEASURES_H
 #define CGAL_HEAT_DIFFUSION_MESH_MEASURES_H
 
+#include <CGAL/squared_distance_3.h>
 #include <CGAL/Polygon_mesh_processing/compute_normal.h>
 #include <CGAL/boost/graph/iterator.h>
 

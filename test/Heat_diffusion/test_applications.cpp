@@ -32,6 +32,8 @@
 #include <set>
 #include <sstream>
 
+namespace test_applications {
+
 namespace HD = CGAL::Heat_diffusion;
 namespace PMP = CGAL::Polygon_mesh_processing;
 typedef CGAL::Exact_predicates_inexact_constructions_kernel K;
@@ -725,7 +727,7 @@ void check_applications_report_progress()
                std::runtime_error, "the diffusion cancelled");
 }
 
-int main()
+int run()
 {
   check_invariance();
   check_noise_robustness();
@@ -742,3 +744,7 @@ int main()
   check_shape_filter_defaults();
   return test_support::report("test_applications");
 }
+
+const test_support::Suite_registration registration("test_applications", &run);
+
+} // namespace test_applications

@@ -25,6 +25,8 @@
 #include <tbb/task_arena.h>
 #endif
 
+namespace test_coarse_level {
+
 namespace HD = CGAL::Heat_diffusion;
 typedef CGAL::Exact_predicates_inexact_constructions_kernel K;
 typedef CGAL::Surface_mesh<K::Point_3> Mesh;
@@ -162,7 +164,7 @@ void test_staged_simplification()
                std::runtime_error, "simplification of the coarse level cancelled");
 }
 
-int main()
+int run()
 {
   try
   {
@@ -229,3 +231,7 @@ int main()
   }
   return test_support::report("test_coarse_level");
 }
+
+const test_support::Suite_registration registration("test_coarse_level", &run);
+
+} // namespace test_coarse_level

@@ -42,6 +42,8 @@
 #include <utility>
 #include <vector>
 
+namespace test_denoising {
+
 namespace HD = CGAL::Heat_diffusion;
 namespace PMP = CGAL::Polygon_mesh_processing;
 
@@ -1014,7 +1016,7 @@ void test_parameters()
 
 } // namespace
 
-int main()
+int run()
 {
   test_parameters();
   test_kernels_and_mesh_types();
@@ -1035,3 +1037,7 @@ int main()
   test_collapsed_components();
   return test_support::report("test_denoising");
 }
+
+const test_support::Suite_registration registration("test_denoising", &run);
+
+} // namespace test_denoising

@@ -24,6 +24,8 @@
 #include <utility>
 #include <vector>
 
+namespace test_heat_kernel_and_diffusion {
+
 namespace HD = CGAL::Heat_diffusion;
 typedef CGAL::Exact_predicates_inexact_constructions_kernel K;
 typedef CGAL::Surface_mesh<K::Point_3> Mesh;
@@ -600,7 +602,7 @@ void check_few_eigenpairs_in_a_cluster()
                "Remedies: a larger sigma, more eigenpairs than the patches, or the local heat kernel");
 }
 
-int main()
+int run()
 {
   try
   {
@@ -621,3 +623,7 @@ int main()
   }
   return test_support::report("test_heat_kernel_and_diffusion");
 }
+
+const test_support::Suite_registration registration("test_heat_kernel_and_diffusion", &run);
+
+} // namespace test_heat_kernel_and_diffusion

@@ -52,6 +52,8 @@
 #include <string>
 #include <vector>
 
+namespace test_hostile_input {
+
 namespace HD = CGAL::Heat_diffusion;
 namespace PMP = CGAL::Polygon_mesh_processing;
 
@@ -1238,7 +1240,7 @@ void check_vertex_names_on_large_meshes()
   CHECK_THROWS(small.diffuse(small_values, 1), std::invalid_argument, "the field value at vertex 7 is nan");
 }
 
-int main()
+int run()
 {
   try
   {
@@ -1261,3 +1263,7 @@ int main()
   }
   return test_support::report("test_hostile_input");
 }
+
+const test_support::Suite_registration registration("test_hostile_input", &run);
+
+} // namespace test_hostile_input

@@ -25,6 +25,8 @@
 #include <map>
 #include <stdexcept>
 
+namespace test_local_heat_kernel {
+
 namespace HD = CGAL::Heat_diffusion;
 typedef CGAL::Exact_predicates_inexact_constructions_kernel K;
 typedef CGAL::Surface_mesh<K::Point_3> Mesh;
@@ -348,7 +350,7 @@ void check_interface()
   CHECK_MESSAGE(operator_difference <= 1e-3, "A_t local vs full spectral: " << operator_difference);
 }
 
-int main()
+int run()
 {
   try
   {
@@ -368,3 +370,7 @@ int main()
   }
   return test_support::report("test_local_heat_kernel");
 }
+
+const test_support::Suite_registration registration("test_local_heat_kernel", &run);
+
+} // namespace test_local_heat_kernel

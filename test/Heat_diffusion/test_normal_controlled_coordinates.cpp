@@ -28,6 +28,8 @@
 #include <sstream>
 #include <vector>
 
+namespace test_normal_controlled_coordinates {
+
 namespace HD = CGAL::Heat_diffusion;
 namespace PMP = CGAL::Polygon_mesh_processing;
 
@@ -460,7 +462,7 @@ void check_reconstruction_edits()
   }
 }
 
-int main()
+int run()
 {
   try
   {
@@ -483,3 +485,7 @@ int main()
   }
   return test_support::report("test_normal_controlled_coordinates");
 }
+
+const test_support::Suite_registration registration("test_normal_controlled_coordinates", &run);
+
+} // namespace test_normal_controlled_coordinates

@@ -21,6 +21,7 @@
 #include <cmath>
 #include <cstdlib>
 #include <iostream>
+#include <map>
 #include <stdexcept>
 #include <sstream>
 #include <string>
@@ -78,6 +79,38 @@ Mesh load(const std::string& name)
   if(!CGAL::IO::read_polygon_mesh(data_path(name), mesh) || num_faces(mesh) == 0)
     throw std::runtime_error("cannot read the test mesh " + data_path(name));
   return mesh;
+}
+
+// Several suites are compiled into one test program (test/Heat_diffusion/CMakeLists.txt:
+// CGAL's and the package's templates are then compiled once for all of them), and CTest
+// runs each suite in its own process: `program suite`. A suite registers its entry point
+// under its name with a namespace-scope `const test_support::Suite_registration`.
+typedef int (*Suite_entry)();
+
+inline std::map<std::string, Suite_entry>& suites()
+{
+  static std::map<std::string, Suite_entry> registered;
+  return registered;
+}
+
+struct Suite_registration
+{
+  Suite_registration(const std::string& name, Suite_entry entry) { suites()[name] = entry; }
+};
+
+// The test program's main(): runs the suite named by its one argument.
+inline int run_suite(int argc, char** argv)
+{
+  const auto found = argc == 2 ? suites().find(argv[1]) : suites().end();
+  if(found == suites().end())
+  {
+    std::cerr << "usage: " << (argc > 0 ? argv[0] : "test program") << " SUITE, where SUITE is one of:";
+    for(const auto& suite : suites())
+      std::cerr << " " << suite.first;
+    std::cerr << std::endl;
+    return 2;
+  }
+  return found->second();
 }
 
 } // namespace test_support
