@@ -28,32 +28,30 @@ cmake -S . -B "$build" -G Ninja -DCMAKE_BUILD_TYPE=Debug -DCGAL_DO_NOT_WARN_ABOU
       -DCGAL_HEAT_DIFFUSION_BUILD_EXAMPLES=OFF -DCGAL_HEAT_DIFFUSION_BUILD_BENCHMARKS=OFF \
       -DCGAL_HEAT_DIFFUSION_BUILD_PYTHON=OFF \
       -DCGAL_HEAT_DIFFUSION_DATA_DIR="$PWD/build/data/meshes" >/dev/null
-# Not under the sanitizers: the doc, install, add_subdirectory and compile-failure
-# checks (no package code runs; compile_fail_parameters is a target that must not
-# build), and
-# the three slowest suites, 10 to 12 times slower under ASan at -O1 than at -O2:
-# test_coarse_level (simplifies armadillo, 3.5 min at -O2), test_local_heat_kernel
-# (2 min at -O2) and test_applications (1 min at -O2, 12 min under ASan on a loaded
-# machine). Their code still runs under the sanitizers: the features, decomposition,
-# enhancement and denoising through test_cli (every subcommand, both kernels) and the
-# fuzz target, the kernel and diffusion through test_heat_kernel_and_diffusion.
-# Every other suite runs, and only what they need is built; built with
-# CGAL_HEAT_DIFFUSION_TEST_UNDER_SANITIZERS, they leave out the checks that a smaller
-# mesh runs through the same code (armadillo) and the comparisons with test-only
-# baselines (test_support::under_sanitizers).
-excluded='^(doc_heat_diffusion|doc_heat_diffusion_in_browser|install_heat_diffusion|subdirectory_heat_diffusion|compile_fail_parameters|test_coarse_level|test_local_heat_kernel|test_applications)$'
-# Only what those tests run is built: the tool (test_cli, test_hostile_cli), the fuzz
-# target (fuzz_regressions) and the two test programs that hold the suites above
-# (test/Heat_diffusion/CMakeLists.txt). A suite whose program is missing here is
-# reported by CTest as "Not Run", a failure.
-targets=(heat_diffusion fuzz_mesh_pipeline tests_ncc_and_diffusion tests_denoising_and_input)
-cmake --build "$build" -j "$(nproc)" --target "${targets[@]}"
+# Not under the sanitizers, by CTest label: the doc, install, add_subdirectory
+# (doc, install) and compile-failure (compile) checks, where no package code runs, and
+# the three slowest suites (not_sanitized, test/Heat_diffusion/CMakeLists.txt), 10 to
+# 12 times slower under ASan at -O1 than at -O2: test_coarse_level (simplifies
+# armadillo, 3.5 min at -O2), test_local_heat_kernel (2 min at -O2) and
+# test_applications (1 min at -O2, 12 min under ASan on a loaded machine). Their code
+# still runs under the sanitizers: the features, decomposition, enhancement and
+# denoising through test_cli (every subcommand, both kernels) and the fuzz target, the
+# kernel and diffusion through test_heat_kernel_and_diffusion. Every other suite runs;
+# built with CGAL_HEAT_DIFFUSION_TEST_UNDER_SANITIZERS, they leave out the checks that
+# a smaller mesh runs through the same code (armadillo) and the comparisons with
+# test-only baselines (test_support::under_sanitizers).
+excluded_labels='^(doc|install|compile|not_sanitized)$'
+# `all` of this configuration is what those tests run: the tool (test_cli,
+# test_hostile_cli), the fuzz target (fuzz_regressions) and the test programs not
+# marked NOT_SANITIZED. A suite whose program is not built is reported by CTest as
+# "Not Run", a failure.
+cmake --build "$build" -j "$(nproc)"
 stage_done "sanitizer build"
 
 export ASAN_OPTIONS=${ASAN_OPTIONS:-detect_leaks=1:abort_on_error=1}
 export UBSAN_OPTIONS=${UBSAN_OPTIONS:-print_stacktrace=1:halt_on_error=1:suppressions=$PWD/test/Heat_diffusion/ubsan.supp}
-echo "== test suite under ASan + UBSan (all but ${excluded})"
-(cd "$build" && ctest --output-on-failure -j "$(nproc)" -E "$excluded")
+echo "== test suite under ASan + UBSan (all but the labels ${excluded_labels})"
+(cd "$build" && ctest --output-on-failure -j "$(nproc)" -LE "$excluded_labels")
 stage_done "sanitized test suite"
 
 echo "== fuzzing fuzz_mesh_pipeline for $seconds s"
