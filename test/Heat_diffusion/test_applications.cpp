@@ -727,7 +727,7 @@ void check_applications_report_progress()
                std::runtime_error, "the diffusion cancelled");
 }
 
-int run()
+void run()
 {
   check_invariance();
   check_noise_robustness();
@@ -742,7 +742,6 @@ int run()
   check_local_kernel_features();
   check_applications_report_progress();
   check_shape_filter_defaults();
-  return test_support::report("test_applications");
 }
 
 const test_support::Suite_registration registration("test_applications", &run);

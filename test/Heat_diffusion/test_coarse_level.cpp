@@ -164,7 +164,7 @@ void test_staged_simplification()
                std::runtime_error, "simplification of the coarse level cancelled");
 }
 
-int run()
+void run()
 {
   try
   {
@@ -229,7 +229,6 @@ int run()
     std::cerr << "unexpected exception: " << e.what() << std::endl;
     test_support::check(false, "no unexpected exception", __FILE__, __LINE__);
   }
-  return test_support::report("test_coarse_level");
 }
 
 const test_support::Suite_registration registration("test_coarse_level", &run);

@@ -1016,7 +1016,7 @@ void test_parameters()
 
 } // namespace
 
-int run()
+void run()
 {
   test_parameters();
   test_kernels_and_mesh_types();
@@ -1035,7 +1035,6 @@ int run()
   test_local_intersection_search();
   test_component_volume_restoration();
   test_collapsed_components();
-  return test_support::report("test_denoising");
 }
 
 const test_support::Suite_registration registration("test_denoising", &run);

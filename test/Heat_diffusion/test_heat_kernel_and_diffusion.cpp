@@ -602,7 +602,7 @@ void check_few_eigenpairs_in_a_cluster()
                "Remedies: a larger sigma, more eigenpairs than the patches, or the local heat kernel");
 }
 
-int run()
+void run()
 {
   try
   {
@@ -621,7 +621,6 @@ int run()
     std::cerr << "unexpected exception: " << e.what() << std::endl;
     test_support::check(false, "no unexpected exception", __FILE__, __LINE__);
   }
-  return test_support::report("test_heat_kernel_and_diffusion");
 }
 
 const test_support::Suite_registration registration("test_heat_kernel_and_diffusion", &run);

@@ -350,7 +350,7 @@ void check_interface()
   CHECK_MESSAGE(operator_difference <= 1e-3, "A_t local vs full spectral: " << operator_difference);
 }
 
-int run()
+void run()
 {
   try
   {
@@ -368,7 +368,6 @@ int run()
     std::cerr << "unexpected exception: " << e.what() << std::endl;
     test_support::check(false, "no unexpected exception", __FILE__, __LINE__);
   }
-  return test_support::report("test_local_heat_kernel");
 }
 
 const test_support::Suite_registration registration("test_local_heat_kernel", &run);

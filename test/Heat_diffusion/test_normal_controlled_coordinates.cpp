@@ -462,7 +462,7 @@ void check_reconstruction_edits()
   }
 }
 
-int run()
+void run()
 {
   try
   {
@@ -483,7 +483,6 @@ int run()
     std::cerr << "unexpected exception: " << e.what() << std::endl;
     test_support::check(false, "no unexpected exception", __FILE__, __LINE__);
   }
-  return test_support::report("test_normal_controlled_coordinates");
 }
 
 const test_support::Suite_registration registration("test_normal_controlled_coordinates", &run);

@@ -84,8 +84,9 @@ Mesh load(const std::string& name)
 // Several suites are compiled into one test program (test/Heat_diffusion/CMakeLists.txt:
 // CGAL's and the package's templates are then compiled once for all of them), and CTest
 // runs each suite in its own process: `program suite`. A suite registers its entry point
-// under its name with a namespace-scope `const test_support::Suite_registration`.
-typedef int (*Suite_entry)();
+// under its name with a namespace-scope `const test_support::Suite_registration`;
+// run_suite() reports its checks under that name.
+typedef void (*Suite_entry)();
 
 inline std::map<std::string, Suite_entry>& suites()
 {
@@ -95,10 +96,18 @@ inline std::map<std::string, Suite_entry>& suites()
 
 struct Suite_registration
 {
-  Suite_registration(const std::string& name, Suite_entry entry) { suites()[name] = entry; }
+  Suite_registration(const std::string& name, Suite_entry entry)
+  {
+    // (two suites of one name: the program would run one of them under both)
+    if(!suites().emplace(name, entry).second)
+    {
+      std::cerr << "two test suites are named " << name << std::endl;
+      std::abort();
+    }
+  }
 };
 
-// The test program's main(): runs the suite named by its one argument.
+// The test program's main(): runs the suite named by its one argument, then reports.
 inline int run_suite(int argc, char** argv)
 {
   const auto found = argc == 2 ? suites().find(argv[1]) : suites().end();
@@ -110,7 +119,8 @@ inline int run_suite(int argc, char** argv)
     std::cerr << std::endl;
     return 2;
   }
-  return found->second();
+  found->second();
+  return report(found->first);
 }
 
 } // namespace test_support
