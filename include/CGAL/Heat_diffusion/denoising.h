@@ -125,8 +125,11 @@ enum class Denoising_method
 ///     \f$ -8 \leq k \leq 8 \f$, from \f$ k = 0 \f$, and interpolated in log time between the
 ///     two times around the crossing. While the flow removes noise its residual is white
 ///     (a correlation near 0); once it removes shape, which is smooth, the residual turns
-///     correlated. For \f$ \nu \geq 1 \f$ the result is \f$ W \f$, or, where the time of
-///     \f$ S \f$ is the longer and \f$ S \f$ does not shrink the shape (see below),
+///     correlated. Where the correlation is positive already at \f$ k = -8 \f$ (noise at or
+///     below the roughness of a coarse tessellation, which the noise level reads as noise),
+///     the threshold is that correlation plus 0.05, if it is less than 0.3. For
+///     \f$ \nu \geq 1 \f$ the result is \f$ W \f$, or, where the time of \f$ S \f$ is the longer
+///     and \f$ S \f$ does not shrink the shape (see below),
 ///     \f$ w S + (1 - w) W \f$: with \f$ f \f$ the fraction of the correlation at the stop of
 ///     \f$ W \f$ that the residual's components along the normals of \f$ W \f$ keep,
 ///     \f$ w = 1 \f$ for \f$ f \leq 1/3 \f$ (the correlation comes from the vertices' sliding
