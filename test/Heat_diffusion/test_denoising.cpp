@@ -651,7 +651,8 @@ void test_vertex_systems()
 // time between eps^2 and 64 eps^2, and the noise is removed (anchor_dense at 0.3 along
 // the normals: 5.5 eps^2, MAD 28.8 to 14.8 degrees). A flow that fails from some time on
 // ends the search at the last time below the crossing; one that always fails gives no
-// result. On the clean anchor, whose noise
+// result. What the flow removes first, M^-1 L p, is the limit of its residual over the
+// time, and its correlation is negative on noise. On the clean anchor, whose noise
 // estimate reads its thin parts (0.36 mean edge length) and whose residual is all shape
 // at every time, the flow takes the shortest time, which leaves the mesh where it is.
 void test_whiteness_stop()
@@ -725,8 +726,10 @@ void test_whiteness_stop()
       // white time, 4 eps^2, and its result.
       std::vector<Eigen::Vector3d> limited;
       double limited_time = 0;
+      const double initial_correlation =
+          HD::internal::neighbour_correlation(indexed, setup.flow.initial_residual());
       CHECK(HD::internal::smooth_until_residual_is_correlated(
-          indexed, noise,
+          indexed, noise, initial_correlation,
           [&](double t, std::vector<Eigen::Vector3d>& out) {
             return t <= 4.001 * noise * noise && setup.flow.smooth(t, HD::internal::flow_substeps, out);
           },
@@ -735,7 +738,25 @@ void test_whiteness_stop()
       CHECK(HD::internal::residual_neighbour_correlation(indexed, input, limited) < HD::internal::whiteness_correlation);
       // A flow that always fails: no result.
       CHECK(!HD::internal::smooth_until_residual_is_correlated(
-          indexed, noise, [](double, std::vector<Eigen::Vector3d>&) { return false; }, limited, limited_time));
+          indexed, noise, initial_correlation, [](double, std::vector<Eigen::Vector3d>&) { return false; }, limited,
+          limited_time));
+      // What the flow removes first: the residual of a short time t over t tends to it.
+      const std::vector<Eigen::Vector3d> initial = setup.flow.initial_residual();
+      std::vector<Eigen::Vector3d> short_time;
+      const double t = std::ldexp(noise * noise, -12);
+      CHECK(setup.flow.smooth(t, HD::internal::flow_substeps, short_time));
+      double difference = 0, norm = 0;
+      for(std::size_t v = 0; v < input.size(); ++v)
+      {
+        difference += ((input[v] - short_time[v]) / t - initial[v]).squaredNorm();
+        norm += initial[v].squaredNorm();
+      }
+      std::cout << "anchor_dense, noise 0.3: (p - F_t p) / t at t = 2^-12 eps^2 is "
+                << std::sqrt(difference / norm) << " from the initial residual, correlation " << initial_correlation
+                << std::endl;
+      CHECK_MESSAGE(std::sqrt(difference / norm) < 0.05, "initial residual: relative difference "
+                                                             << std::sqrt(difference / norm));
+      CHECK(initial_correlation < 0);
     }
     else
     {

@@ -125,7 +125,8 @@ enum class Denoising_method
 ///     \f$ -8 \leq k \leq 8 \f$, from \f$ k = 0 \f$, and interpolated in log time between the
 ///     two times around the crossing. While the flow removes noise its residual is white
 ///     (a correlation near 0); once it removes shape, which is smooth, the residual turns
-///     correlated. Where the correlation is positive already at \f$ k = -8 \f$ (noise at or
+///     correlated. Where what the flow removes first, \f$ M^{-1} L p \f$ (the limit of
+///     \f$ r / t \f$ as the time \f$ t \to 0 \f$), has a positive correlation (noise at or
 ///     below the roughness of a coarse tessellation, which the noise level reads as noise),
 ///     the threshold is that correlation plus 0.05, if it is less than 0.3. For
 ///     \f$ \nu \geq 1 \f$ the result is \f$ W \f$, or, where the time of \f$ S \f$ is the longer

@@ -125,6 +125,18 @@ public:
     }
   }
 
+  // What the flow removes first: M^-1 L p for the points p it starts from. Whatever the
+  // steps, the flow for a time t is p - t M^-1 L p + O(t^2), so the residual of short
+  // times points this way.
+  std::vector<Eigen::Vector3d> initial_residual() const
+  {
+    const Eigen::MatrixXd velocity = stiffness_.matrix() * start_;
+    std::vector<Eigen::Vector3d> result(std::size_t(start_.rows()));
+    for(std::size_t i = 0; i < result.size(); ++i)
+      result[i] = velocity.row(Eigen::Index(i)).transpose() / masses_[Eigen::Index(i)];
+    return result;
+  }
+
   // The flow for `time` in `steps` steps, written to `result`. Returns false, leaving
   // `result` untouched, if the factorisation or a solve fails.
   bool smooth(double time, std::size_t steps, std::vector<Eigen::Vector3d>& result)
@@ -256,26 +268,27 @@ constexpr double whiteness_correlation = 0.3;
 constexpr int flow_time_doublings = 8;
 
 // Noise below the roughness of the shape. What the flow removes first from noisy
-// vertices is the noise's Laplacian, correlated negatively between neighbours: at
-// 2^-6 eps^2, -0.05 to -0.19 on the benchmark's noisy rows (0.1 to 0.5 mean edge length,
-// both directions) of blade, rotor_small, couplingdown, anchor, cheese and turbine, the
-// meshes whose result is this flow, and -0.01 to -0.09 on b9_mesh from 0.3 on. Where it
-// is positive already at the shortest time,
-// 2^-flow_time_doublings eps^2, what the flow removes from the start is mostly shape:
-// the noise is at or below the roughness of a coarse tessellation of curved surfaces,
-// which the noise estimate reads as noise (CGAL's b9_mesh, a CAD export of needles: eps
-// 2.0 and 3.1 times the noise at 0.1 mean edge length along the normals and in random
-// directions; 0.075 and 0.066 at 2^-6 eps^2, 0.015 to 0.029 at 0.2). The flow then stops
-// where the correlation has risen by rough_shape_margin above that level, if that comes
-// before whiteness_correlation. Measured with the benchmark's seeds, the result of
-// denoise_mesh() on b9_mesh at 0.1 along the normals and in random directions, then
-// 0.2, then clean: 15.3, 13.7, 20.8, 18.5 and 10.9 degrees without it; 12.5, 8.81,
-// 20.5, 16.8 and 1.98 with a margin of 0.03; 12.7, 9.11, 20.5, 16.3 and 3.40 with 0.05;
-// 13.0, 9.55, 20.5, 16.3 and 4.66 with 0.07; 13.4, 10.3, 20.5, 16.6 and 6.23 with 0.1 (the
-// best of the flow's times: 12.6, 8.81, 20.5, 16.8). The results on the other meshes of
-// the benchmark do not change (their correlation there is negative; the clean meshes
-// that reach the flow, b9_mesh aside, have one above whiteness_correlation, and keep
-// their shortest time).
+// vertices (Cotangent_flow::initial_residual(), the limit of the residual's direction as
+// t -> 0) is the noise's Laplacian, correlated negatively between neighbours: -0.06 to
+// -0.19 on the benchmark's noisy rows (0.1 to 0.5 mean edge length, both directions) of
+// blade, rotor_small, couplingdown, anchor, cheese and turbine, the meshes whose result
+// is this flow, and -0.01 to -0.09 on b9_mesh from 0.3 on. Where it is positive, what
+// the flow removes from the start is mostly shape: the noise is at or below the
+// roughness of a coarse tessellation of curved surfaces, which the noise estimate reads
+// as noise (CGAL's b9_mesh, a CAD export of needles: eps 2.0 and 3.1 times the noise at
+// 0.1 mean edge length along the normals and in random directions; 0.068 and 0.053 there,
+// 0.004 to 0.024 at 0.2). The flow then stops where the correlation has risen by
+// rough_shape_margin above that level, if that comes before whiteness_correlation.
+// Measured with the benchmark's seeds, the result of denoise_mesh() on b9_mesh at 0.1
+// along the normals and in random directions, then 0.2, then clean, with the level of
+// the shortest time 2^-flow_time_doublings eps^2 in place of the limit (0.070 and 0.057
+// at 0.1; one more flow per stop): 15.3, 13.7, 20.8, 18.5 and 10.9 degrees without the
+// margin; 12.5, 8.81, 20.5, 16.8 and 1.98 with a margin of 0.03; 12.7, 9.11, 20.5, 16.3
+// and 3.40 with 0.05; 13.0, 9.55, 20.5, 16.3 and 4.66 with 0.07; 13.4, 10.3, 20.5, 16.6
+// and 6.23 with 0.1 (the best of the flow's times: 12.6, 8.81, 20.5, 16.8). The results
+// on the other meshes of the benchmark do not change (their correlation is negative; the
+// clean meshes that reach the flow, b9_mesh aside, have one above whiteness_correlation
+// at the shortest time, and keep it).
 constexpr double rough_shape_margin = 0.05;
 
 // Where the needle copy shrinks the shape (meshes whose parts are a few faces thick, or
@@ -325,13 +338,14 @@ inline bool relinearised_smoothing(const Indexed_mesh& mesh, Cotangent_flow& flo
 
 // The input smoothed by `flow` (a callable (time, result) -> bool, false if it failed),
 // for the time at which the residual's neighbour correlation reaches
-// whiteness_correlation, or less where the residual of the shortest time is correlated
-// already (see rough_shape_margin), `noise` the noise level eps; `time` receives that
-// time. A time at which the flow fails counts as one past the crossing. Returns false,
-// leaving `result` untouched, if the flow fails at every time it tries.
+// whiteness_correlation, or less where `initial_correlation`, that of what the flow
+// removes first, is positive (see rough_shape_margin), `noise` the noise level eps;
+// `time` receives that time. A time at which the flow fails counts as one past the
+// crossing. Returns false, leaving `result` untouched, if the flow fails at every time it
+// tries.
 template <typename Flow>
-bool smooth_until_residual_is_correlated(const Indexed_mesh& mesh, double noise, Flow&& flow,
-                                         std::vector<Eigen::Vector3d>& result, double& time)
+bool smooth_until_residual_is_correlated(const Indexed_mesh& mesh, double noise, double initial_correlation,
+                                         Flow&& flow, std::vector<Eigen::Vector3d>& result, double& time)
 {
   struct Sample
   {
@@ -340,15 +354,11 @@ bool smooth_until_residual_is_correlated(const Indexed_mesh& mesh, double noise,
     double correlation = 0;
     std::vector<Eigen::Vector3d> points;
   };
-  double threshold = whiteness_correlation;
+  const double threshold = initial_correlation > 0
+                               ? (std::min)(whiteness_correlation, initial_correlation + rough_shape_margin)
+                               : whiteness_correlation;
   auto white = [&](const Sample& sample) { return sample.done && sample.correlation < threshold; };
-  Sample shortest;  // (computed first; the walk below may come down to it)
   auto sample_at = [&](int exponent, Sample& sample) {
-    if(shortest.done && exponent == shortest.exponent)
-    {
-      sample = shortest;
-      return;
-    }
     sample.exponent = exponent;
     sample.done = flow(std::ldexp(noise * noise, exponent), sample.points);
     if(sample.done)
@@ -359,13 +369,9 @@ bool smooth_until_residual_is_correlated(const Indexed_mesh& mesh, double noise,
     result.swap(sample.points);
     return true;
   };
-  // The threshold, from the shortest time. Then from k = 0, up while the residual is
-  // white (below the threshold), down while it is not; the crossing lies between the
-  // white sample and the other one, a factor of 2 above it, interpolated in log time
-  // where both correlations are known.
-  sample_at(-flow_time_doublings, shortest);
-  if(shortest.done && shortest.correlation > 0)
-    threshold = (std::min)(threshold, shortest.correlation + rough_shape_margin);
+  // From k = 0, up while the residual is white (below the threshold), down while it is
+  // not; the crossing lies between the white sample and the other one, a factor of 2
+  // above it, interpolated in log time where both correlations are known.
   Sample previous, current;
   sample_at(0, current);
   const int direction = white(current) ? 1 : -1;
@@ -403,20 +409,21 @@ inline bool smooth_until_residual_is_correlated(const Indexed_mesh& mesh, double
                                                 std::vector<Eigen::Vector3d>& result, double& time)
 {
   return smooth_until_residual_is_correlated(
-      mesh, noise,
+      mesh, noise, neighbour_correlation(mesh, flow.initial_residual()),
       [&](double t, std::vector<Eigen::Vector3d>& smoothed) { return flow.smooth(t, flow_substeps, smoothed); },
       result, time);
 }
 
 // The input smoothed by the relinearised flow in relinearised_steps steps, stopped by its
-// residual (see above); `flow` is the Cotangent_flow of the input.
+// residual (see above); `flow` is the Cotangent_flow of the input, which takes the first
+// step, and so removes the same first.
 inline bool smooth_relinearised_until_residual_is_correlated(const Indexed_mesh& mesh, double noise,
                                                              Cotangent_flow& flow,
                                                              std::vector<Eigen::Vector3d>& result, double& time)
 {
   std::optional<Cotangent_flow> later_steps;
   return smooth_until_residual_is_correlated(
-      mesh, noise,
+      mesh, noise, neighbour_correlation(mesh, flow.initial_residual()),
       [&](double t, std::vector<Eigen::Vector3d>& smoothed) {
         return relinearised_smoothing(mesh, flow, later_steps, t, relinearised_steps, smoothed);
       },
