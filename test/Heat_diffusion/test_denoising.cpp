@@ -726,8 +726,9 @@ void test_whiteness_stop()
       // white time, 4 eps^2, and its result.
       std::vector<Eigen::Vector3d> limited;
       double limited_time = 0;
-      const double initial_correlation =
-          HD::internal::neighbour_correlation(indexed, setup.flow.initial_residual());
+      const std::vector<Eigen::Vector3d> initial = setup.flow.initial_residual();
+      const double initial_correlation = HD::internal::neighbour_correlation(indexed, initial);
+      CHECK(initial_correlation == HD::internal::initial_residual_correlation(indexed, setup.flow));
       CHECK(HD::internal::smooth_until_residual_is_correlated(
           indexed, noise, initial_correlation,
           [&](double t, std::vector<Eigen::Vector3d>& out) {
@@ -741,7 +742,6 @@ void test_whiteness_stop()
           indexed, noise, initial_correlation, [](double, std::vector<Eigen::Vector3d>&) { return false; }, limited,
           limited_time));
       // What the flow removes first: the residual of a short time t over t tends to it.
-      const std::vector<Eigen::Vector3d> initial = setup.flow.initial_residual();
       std::vector<Eigen::Vector3d> short_time;
       const double t = std::ldexp(noise * noise, -12);
       CHECK(setup.flow.smooth(t, HD::internal::flow_substeps, short_time));

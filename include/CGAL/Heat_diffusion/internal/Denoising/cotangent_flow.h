@@ -243,6 +243,14 @@ inline double residual_neighbour_correlation(const Indexed_mesh& mesh, const std
   return neighbour_correlation(mesh, along);
 }
 
+// The neighbour correlation of what `flow` removes first
+// (Cotangent_flow::initial_residual()): negative on noise, positive where the flow
+// removes shape from the start (see rough_shape_margin).
+inline double initial_residual_correlation(const Indexed_mesh& mesh, const Cotangent_flow& flow)
+{
+  return neighbour_correlation(mesh, flow.initial_residual());
+}
+
 // The time of the flow. The time that removes the noise and keeps the shape varies by a
 // factor of 30 in units of eps^2 (eps the noise level along the normals,
 // plane_fit_noise_level) from mesh to mesh: with the benchmark's seeds, at 0.1 to 0.5
@@ -409,7 +417,7 @@ inline bool smooth_until_residual_is_correlated(const Indexed_mesh& mesh, double
                                                 std::vector<Eigen::Vector3d>& result, double& time)
 {
   return smooth_until_residual_is_correlated(
-      mesh, noise, neighbour_correlation(mesh, flow.initial_residual()),
+      mesh, noise, initial_residual_correlation(mesh, flow),
       [&](double t, std::vector<Eigen::Vector3d>& smoothed) { return flow.smooth(t, flow_substeps, smoothed); },
       result, time);
 }
@@ -423,7 +431,7 @@ inline bool smooth_relinearised_until_residual_is_correlated(const Indexed_mesh&
 {
   std::optional<Cotangent_flow> later_steps;
   return smooth_until_residual_is_correlated(
-      mesh, noise, neighbour_correlation(mesh, flow.initial_residual()),
+      mesh, noise, initial_residual_correlation(mesh, flow),
       [&](double t, std::vector<Eigen::Vector3d>& smoothed) {
         return relinearised_smoothing(mesh, flow, later_steps, t, relinearised_steps, smoothed);
       },
