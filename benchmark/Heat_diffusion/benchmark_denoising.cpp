@@ -33,12 +33,13 @@
 //   --normal-only only the noise along the normals
 //   --clean       also each clean mesh (noise 0): how far each method moves a mesh that
 //                 has no noise
-//   --noise x     only this noise level (repeatable)
+//   --noise x     only this noise level, in mean edge lengths (repeatable)
 //   mesh          a file name in CGAL's data set, or a path (default: the whole set)
 
 #include <CGAL/Exact_predicates_inexact_constructions_kernel.h>
 #include <CGAL/Surface_mesh.h>
 
+#include "benchmark_command_line.h"
 #include "mesh_measures.h"
 #include "baselines/bilateral_normal_filtering.h"
 #include "baselines/guided_normal_filtering.h"
@@ -55,7 +56,6 @@
 #include <chrono>
 #include <cmath>
 #include <cstdio>
-#include <cstring>
 #include <functional>
 #include <iostream>
 #include <iterator>
@@ -297,26 +297,28 @@ int main(int argc, char** argv)
   bool quick = false, signature = false, normal_only = false, clean = false;
   std::vector<double> noises;
   std::vector<Set_entry> set;
-  for(int i = 1; i < argc; ++i)
-  {
-    if(std::strcmp(argv[i], "--quick") == 0)
-      quick = true;
-    else if(std::strcmp(argv[i], "--signature") == 0)
-      signature = true;
-    else if(std::strcmp(argv[i], "--normal-only") == 0)
-      normal_only = true;
-    else if(std::strcmp(argv[i], "--clean") == 0)
-      clean = true;
-    else if(std::strcmp(argv[i], "--noise") == 0 && i + 1 < argc)
-      noises.push_back(std::stod(argv[++i]));
-    else if(argv[i][0] == '-')
-    {
-      std::cerr << "unknown option " << argv[i] << "\n";
-      return EXIT_FAILURE;
-    }
-    else
-      set.push_back({argv[i], "given"});
-  }
+  namespace cli = heat_diffusion_cli;
+  const std::string usage =
+      "usage: benchmark_denoising [--quick] [--signature] [--normal-only] [--clean] [--noise x]... [mesh ...]\n"
+      "  --quick        fandisk, anchor and elephant at noise 0.3 and 0.5 along the normals\n"
+      "  --signature    also run the paper's pipeline (slow)\n"
+      "  --normal-only  only the noise along the normals\n"
+      "  --clean        also each clean mesh (noise 0)\n"
+      "  --noise x      only this noise level, in mean edge lengths, > 0 and <= 10 (repeatable)\n"
+      "  mesh           a file name in CGAL's data set, or a path (default: the whole set)\n";
+  if(const auto exit_code = heat_diffusion_benchmark::read_command_line(
+         argc, argv, {"--quick", "--signature", "--normal-only", "--clean"}, {"--noise"}, usage,
+         [&](const cli::Arguments& a) {
+           quick = a.flag("--quick");
+           signature = a.flag("--signature");
+           normal_only = a.flag("--normal-only");
+           clean = a.flag("--clean");
+           for(const std::string& noise : a.values("--noise"))
+             noises.push_back(cli::parse_number("--noise", noise, 0., true, 10.));
+           for(const std::string& mesh : a.positional())
+             set.push_back({mesh, "given"});
+         }))
+    return *exit_code;
   if(set.empty())
     set = quick ? quick_set : full_set;
   if(noises.empty())

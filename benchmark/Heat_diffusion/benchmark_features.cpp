@@ -41,6 +41,7 @@
 #include <CGAL/bounding_box.h>
 #include <CGAL/Surface_mesh.h>
 
+#include "benchmark_command_line.h"
 #include "mesh_measures.h"
 
 #include <chrono>
@@ -207,41 +208,51 @@ int main(int argc, char* argv[])
   std::vector<std::string> meshes = {"fandisk.off", "armadillo.off"};
   bool shape_filter = false, meshes_given = false;
   std::vector<double> sigmas = {0.1}, step_counts = {2, 5};
-  auto numbers = [](const char* text) {
+  namespace cli = heat_diffusion_cli;
+  // A comma-separated list of numbers of `option`, each > 0 (whole with `whole`).
+  auto numbers = [](const std::string& option, const std::string& text, bool whole) {
     std::vector<double> values;
     std::stringstream list(text);
     for(std::string value; std::getline(list, value, ',');)
-      values.push_back(std::atof(value.c_str()));
+      values.push_back(whole ? double(cli::parse_count(option, value, 1, 1000000))
+                             : cli::parse_number(option, value, 0., true));
+    if(values.empty())
+      throw cli::Usage_error(option + " needs at least one number");
     return values;
   };
-  for(int i = 1; i < argc; ++i)
-  {
-    const std::string arg = argv[i];
-    if(arg == "--shape-filter")
-      shape_filter = true;
-    else if(arg == "--sigmas" && i + 1 < argc)
-      sigmas = numbers(argv[++i]);
-    else if(arg == "--steps" && i + 1 < argc)
-      step_counts = numbers(argv[++i]);
-    else if(arg == "--seeds" && i + 1 < argc)
-      seeds = unsigned(std::atoi(argv[++i]));
-    else if(arg == "--meshes" && i + 1 < argc)
-    {
-      meshes.clear();
-      meshes_given = true;
-      std::stringstream list(argv[++i]);
-      for(std::string name; std::getline(list, name, ',');)
-        meshes.push_back(name);
-    }
-    else if(!arg.empty() && arg[0] != '-')
-      data = arg;
-    else
-    {
-      std::fprintf(stderr, "usage: %s [DATA_DIR] [--seeds S] [--meshes a.off,b.off] [--shape-filter [--sigmas S1,S2]"
-                           " [--steps K1,K2]]\n", argv[0]);
-      return 2;
-    }
-  }
+  const std::string usage =
+      "usage: benchmark_features [DATA_DIR] [--seeds S] [--meshes a.off,b.off]\n"
+      "                          [--shape-filter [--sigmas S1,S2,...] [--steps K1,K2,...]]\n"
+      "  --seeds         noise draws per mesh, 1 to 1000 (default 3)\n"
+      "  --meshes        meshes of DATA_DIR (default fandisk.off,armadillo.off; with --shape-filter,\n"
+      "                  armadillo.off,bunny00.off,elephant.off,fandisk.off)\n"
+      "  --shape-filter  table 4 alone: the shape filters, with the sigmas (default 0.1) and steps\n"
+      "                  per level (default 2,5) of --sigmas and --steps\n";
+  if(const auto exit_code = heat_diffusion_benchmark::read_command_line(
+         argc, argv, {"--shape-filter"}, {"--sigmas", "--steps", "--seeds", "--meshes"}, usage,
+         [&](const cli::Arguments& a) {
+           data = heat_diffusion_benchmark::data_directory(a, data);
+           shape_filter = a.flag("--shape-filter");
+           if((a.has("--sigmas") || a.has("--steps")) && !shape_filter)
+             throw cli::Usage_error("--sigmas and --steps are settings of --shape-filter");
+           if(a.has("--sigmas"))
+             sigmas = numbers("--sigmas", a.value("--sigmas", ""), false);
+           if(a.has("--steps"))
+             step_counts = numbers("--steps", a.value("--steps", ""), true);
+           seeds = unsigned(cli::parse_count("--seeds", a.value("--seeds", "3"), 1, 1000));
+           if(a.has("--meshes"))
+           {
+             meshes.clear();
+             meshes_given = true;
+             std::stringstream list(a.value("--meshes", ""));
+             for(std::string name; std::getline(list, name, ',');)
+               if(!name.empty())
+                 meshes.push_back(name);
+             if(meshes.empty())
+               throw cli::Usage_error("--meshes needs at least one mesh");
+           }
+         }))
+    return *exit_code;
   try
   {
     if(shape_filter)

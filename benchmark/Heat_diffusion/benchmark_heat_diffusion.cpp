@@ -30,6 +30,8 @@
 
 #include <Eigen/Core>
 
+#include "benchmark_command_line.h"
+
 #include <algorithm>
 #include <chrono>
 #include <cmath>
@@ -388,16 +390,18 @@ int main(int argc, char* argv[])
   std::string data = CGAL_HEAT_DIFFUSION_DATA_DIR;
   int repeats = 21;
   int eigen_repeats = 3;
-  for(int i = 1; i < argc; ++i)
-  {
-    const std::string argument = argv[i];
-    if(argument == "--repeats" && i + 1 < argc)
-      repeats = std::max(1, std::atoi(argv[++i]));
-    else if(argument == "--eigen-repeats" && i + 1 < argc)
-      eigen_repeats = std::max(1, std::atoi(argv[++i]));
-    else
-      data = argument;
-  }
+  namespace cli = heat_diffusion_cli;
+  const std::string usage = "usage: benchmark_heat_diffusion [DATA_DIR] [--repeats R] [--eigen-repeats E]\n"
+                            "  --repeats        runs of the NCC and of A_t's construction (of the steps and the global\n"
+                            "                   smoothing: 10 R + 1), 1 to 1000 (default 21)\n"
+                            "  --eigen-repeats  runs of each eigen solve, 1 to 100 (default 3)\n";
+  if(const auto exit_code = heat_diffusion_benchmark::read_command_line(
+         argc, argv, {}, {"--repeats", "--eigen-repeats"}, usage, [&](const cli::Arguments& a) {
+           data = heat_diffusion_benchmark::data_directory(a, data);
+           repeats = int(cli::parse_count("--repeats", a.value("--repeats", "21"), 1, 1000));
+           eigen_repeats = int(cli::parse_count("--eigen-repeats", a.value("--eigen-repeats", "3"), 1, 100));
+         }))
+    return *exit_code;
 
   const auto start = std::chrono::steady_clock::now();
   Table2_settings settings;

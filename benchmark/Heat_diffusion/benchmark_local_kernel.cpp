@@ -42,6 +42,8 @@
 #include <CGAL/Surface_mesh.h>
 #include <CGAL/subdivision_method_3.h>
 
+#include "benchmark_command_line.h"
+
 #include <sys/resource.h>
 #include <sys/wait.h>
 #include <unistd.h>
@@ -288,26 +290,30 @@ int main(int argc, char** argv)
   int levels = 3, first_level = 0, repeat = 1;
   bool table_1 = true, table_3 = true;
   double t = 1., sigma = 0.1;
-  for(int i = 1; i < argc; ++i)
-  {
-    const std::string arg = argv[i];
-    if(arg == "--levels" && i + 1 < argc)
-      levels = std::atoi(argv[++i]);
-    else if(arg == "--first-level" && i + 1 < argc)
-      first_level = std::atoi(argv[++i]);
-    else if(arg == "--no-table-1")
-      table_1 = false;
-    else if(arg == "--no-table-3")
-      table_3 = false;
-    else if(arg == "--time" && i + 1 < argc)
-      t = std::atof(argv[++i]);
-    else if(arg == "--sigma" && i + 1 < argc)
-      sigma = std::atof(argv[++i]);
-    else if(arg == "--repeat" && i + 1 < argc)
-      repeat = (std::max)(1, std::atoi(argv[++i]));
-    else
-      data = arg;
-  }
+  namespace cli = heat_diffusion_cli;
+  const std::string usage =
+      "usage: benchmark_local_kernel [DATA_DIR] [--levels L] [--first-level F] [--no-table-1] [--no-table-3]\n"
+      "                              [--time T] [--sigma S] [--repeat R]\n"
+      "  --levels       Loop subdivisions of table 2, -1 (no table 2) to 4 (default 3: 1.6M vertices)\n"
+      "  --first-level  the first level of table 2, 0 to 4 (default 0)\n"
+      "  --time, --sigma  t (default 1) and sigma (default 0.1) of tables 1 and 2\n"
+      "  --repeat       runs of each kernel per level of table 2, 1 to 100 (default 1)\n";
+  if(const auto exit_code = heat_diffusion_benchmark::read_command_line(
+         argc, argv, {"--no-table-1", "--no-table-3"}, {"--levels", "--first-level", "--time", "--sigma", "--repeat"},
+         usage, [&](const cli::Arguments& a) {
+           data = heat_diffusion_benchmark::data_directory(a, data);
+           levels = a.value("--levels", "3") == "-1" ? -1 : int(cli::parse_count("--levels", a.value("--levels", "3"), 0, 4));
+           first_level = int(cli::parse_count("--first-level", a.value("--first-level", "0"), 0, 4));
+           if(levels >= 0 && first_level > levels)
+             throw cli::Usage_error("--first-level " + std::to_string(first_level) + " is above --levels " +
+                                    std::to_string(levels));
+           table_1 = !a.flag("--no-table-1");
+           table_3 = !a.flag("--no-table-3");
+           t = cli::parse_number("--time", a.value("--time", "1"), 0., true);
+           sigma = cli::parse_number("--sigma", a.value("--sigma", "0.1"), 0., true);
+           repeat = int(cli::parse_count("--repeat", a.value("--repeat", "1"), 1, 100));
+         }))
+    return *exit_code;
   try
   {
     if(table_1)

@@ -14,10 +14,13 @@
 //    peak memory of the whole command, each run and the medians.
 // The machine may be shared: compare within a run.
 //
-// Usage: benchmark_mesh_input TOOL [--dir DIR] [--levels L] [--repeat R] [--data DATA_DIR]
-//   TOOL: the heat_diffusion executable; DIR (default /tmp): where the meshes and the
-//   tool's output go; L (default 3); R (default 3).
+// Usage: benchmark_mesh_input [TOOL] [--dir DIR] [--levels L] [--repeat R] [--data DATA_DIR]
+//   TOOL: the heat_diffusion executable (default: the one next to this program); DIR
+//   (default /tmp): where the meshes and the tool's output go; L (default 3); R
+//   (default 3). The medians are those of the tool's runs that succeeded; if none did,
+//   the benchmark says so and exits with 1.
 
+#include "benchmark_command_line.h"
 #include "mesh_input.h"
 
 #include <CGAL/subdivision_method_3.h>
@@ -27,10 +30,13 @@
 #include <chrono>
 #include <cstdio>
 #include <cstdlib>
+#include <filesystem>
 #include <fstream>
 #include <sstream>
 #include <string>
 #include <vector>
+
+#include <unistd.h>
 
 namespace cli = heat_diffusion_cli;
 typedef cli::Mesh Mesh;
@@ -40,10 +46,9 @@ double seconds_since(std::chrono::steady_clock::time_point start)
   return std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
 }
 
+// (of a non-empty sample)
 double median(std::vector<double> x)
 {
-  if(x.empty())
-    return 0;
   std::sort(x.begin(), x.end());
   return x.size() % 2 ? x[x.size() / 2] : 0.5 * (x[x.size() / 2 - 1] + x[x.size() / 2]);
 }
@@ -110,32 +115,40 @@ Tool_run run_tool(const std::string& tool, const std::string& input, const std::
   const std::size_t m = t.find("Maximum resident set size (kbytes): ");
   if(m != std::string::npos)
     run.peak_gib = std::atof(t.c_str() + m + 36) / (1024.0 * 1024.0);
-  run.ok = w != std::string::npos && m != std::string::npos;
+  run.ok = w != std::string::npos && m != std::string::npos &&
+           std::all_of(run.stages.begin(), run.stages.end(), [](double s) { return s >= 0; });
   return run;
 }
 
 int main(int argc, char** argv)
 {
-  if(argc < 2)
-  {
-    std::fprintf(stderr, "usage: benchmark_mesh_input TOOL [--dir DIR] [--levels L] [--repeat R] [--data DATA_DIR]\n");
-    return 2;
-  }
-  const std::string tool = argv[1];
+  const std::string usage =
+      "usage: benchmark_mesh_input [TOOL] [--dir DIR] [--levels L] [--repeat R] [--data DATA_DIR]\n"
+      "  TOOL      the heat_diffusion executable (default: the one next to this program)\n"
+      "  --dir     where the meshes and the tool's output go (default /tmp)\n"
+      "  --levels  Loop subdivisions of armadillo, 0 to 4 (default 3: 1,664,002 vertices)\n"
+      "  --repeat  runs of each reader and of the tool, 1 to 100 (default 3)\n"
+      "  --data    the directory of CGAL's meshes\n";
+  std::string tool = (std::filesystem::path(argv[0]).parent_path() / "heat_diffusion").string();
   std::string dir = "/tmp", data = CGAL_HEAT_DIFFUSION_DATA_DIR;
   int levels = 3, repeat = 3;
-  for(int i = 2; i + 1 < argc; i += 2)
-  {
-    const std::string arg = argv[i];
-    if(arg == "--dir")
-      dir = argv[i + 1];
-    else if(arg == "--levels")
-      levels = std::atoi(argv[i + 1]);
-    else if(arg == "--repeat")
-      repeat = std::max(1, std::atoi(argv[i + 1]));
-    else if(arg == "--data")
-      data = argv[i + 1];
-  }
+  if(const auto exit_code = heat_diffusion_benchmark::read_command_line(
+         argc, argv, {}, {"--dir", "--levels", "--repeat", "--data"}, usage, [&](const cli::Arguments& a) {
+           if(a.positional().size() > 1)
+             throw cli::Usage_error("one TOOL at most");
+           if(!a.positional().empty())
+             tool = a.positional()[0];
+           // checked now: the meshes take minutes to write and read before the tool runs
+           if(!std::filesystem::is_regular_file(tool) || access(tool.c_str(), X_OK) != 0)
+             throw cli::Usage_error("TOOL '" + tool + "' is not an executable file");
+           dir = a.value("--dir", dir);
+           if(!std::filesystem::is_directory(dir))
+             throw cli::Usage_error("--dir '" + dir + "' is not a directory");
+           data = a.value("--data", data);
+           levels = int(cli::parse_count("--levels", a.value("--levels", "3"), 0, 4));
+           repeat = int(cli::parse_count("--repeat", a.value("--repeat", "3"), 1, 100));
+         }))
+    return *exit_code;
   const std::string base = dir + "/armadillo_loop" + std::to_string(levels);
   const std::vector<std::string> files = {base + ".off", base + ".ply"};
   if(!std::filesystem::exists(files[0]) || !std::filesystem::exists(files[1]))
@@ -158,6 +171,7 @@ int main(int argc, char** argv)
     std::printf("wrote %s and %s (%zu vertices)\n", files[0].c_str(), files[1].c_str(), mesh.number_of_vertices());
   }
 
+  bool failed = false;
   for(const std::string& file : files)
   {
     std::error_code ec;
@@ -190,7 +204,7 @@ int main(int argc, char** argv)
       const Tool_run run = run_tool(tool, file, dir + "/benchmark_mesh_input_out");
       if(!run.ok)
       {
-        std::printf("  %-6d (the tool failed)\n", r + 1);
+        std::printf("  %-6d (the tool failed: see %s/benchmark_mesh_input_out.json and .time)\n", r + 1, dir.c_str());
         continue;
       }
       std::printf("  %-6d %8.2f %12.2f %10.2f %9.2f %7.2f %8.2f %8.2f\n", r + 1, run.stages[0], run.stages[1],
@@ -200,10 +214,16 @@ int main(int argc, char** argv)
       columns[5].push_back(run.wall);
       columns[6].push_back(run.peak_gib);
     }
+    if(columns[0].empty())
+    {
+      std::printf("  no run of the tool succeeded: no medians\n");
+      failed = true;
+      continue;
+    }
     std::printf("  %-6s %8.2f %12.2f %10.2f %9.2f %7.2f %8.2f %8.2f\n", "median", median(columns[0]),
                 median(columns[1]), median(columns[2]), median(columns[3]), median(columns[4]), median(columns[5]),
                 median(columns[6]));
     std::printf("  (CGAL's reader on this file in this run: %.2f s)\n", median(cgal));
   }
-  return 0;
+  return failed ? 1 : 0;
 }

@@ -33,6 +33,8 @@
 #include <CGAL/Surface_mesh.h>
 #include <CGAL/subdivision_method_3.h>
 
+#include "benchmark_command_line.h"
+
 #include <sys/resource.h>
 #include <sys/wait.h>
 #include <unistd.h>
@@ -328,24 +330,36 @@ int main(int argc, char* argv[])
   long coarse = -1;  // automatic
   double time = 1.;
   bool order = false, denoising = false;
-  for(int i = 1; i < argc; ++i)
-  {
-    const std::string a = argv[i];
-    if(a == "--min-level" && i + 1 < argc)
-      min_level = std::atoi(argv[++i]);
-    else if(a == "--max-level" && i + 1 < argc)
-      max_level = std::atoi(argv[++i]);
-    else if(a == "--coarse" && i + 1 < argc)
-      coarse = std::atol(argv[++i]);
-    else if(a == "--order")
-      order = true;
-    else if(a == "--denoising")
-      denoising = true;
-    else if(a == "--time" && i + 1 < argc)
-      time = std::atof(argv[++i]);
-    else
-      data = a;
-  }
+  namespace cli = heat_diffusion_cli;
+  const std::string usage =
+      "usage: benchmark_scale_curve [DATA_DIR] [--min-level L] [--max-level L] [--coarse N] [--time T] [--order]\n"
+      "                             [--denoising]\n"
+      "  --min-level, --max-level  Loop subdivisions of armadillo, 0 to 4 (default 0 and 3)\n"
+      "  --coarse     the coarse level's vertices, 0 (none) or at least 4 (default: automatic)\n"
+      "  --time       t (default 1)\n"
+      "  --order      also one diffusion step in the mesh's order and in the package's\n"
+      "  --denoising  two parts of denoise_mesh() instead of the pipeline\n";
+  if(const auto exit_code = heat_diffusion_benchmark::read_command_line(
+         argc, argv, {"--order", "--denoising"}, {"--min-level", "--max-level", "--coarse", "--time"}, usage,
+         [&](const cli::Arguments& a) {
+           data = heat_diffusion_benchmark::data_directory(a, data);
+           min_level = int(cli::parse_count("--min-level", a.value("--min-level", "0"), 0, 4));
+           max_level = int(cli::parse_count("--max-level", a.value("--max-level", "3"), 0, 4));
+           if(min_level > max_level)
+             throw cli::Usage_error("--min-level " + std::to_string(min_level) + " is above --max-level " +
+                                    std::to_string(max_level));
+           if(a.has("--coarse"))
+           {
+             coarse = long(cli::parse_count("--coarse", a.value("--coarse", ""), 0, 1e9));
+             if(coarse > 0 && coarse < 4)
+               throw cli::Usage_error("--coarse must be 0 (no coarse level) or at least 4, not '" +
+                                      a.value("--coarse", "") + "'");
+           }
+           time = cli::parse_number("--time", a.value("--time", "1"), 0., true);
+           order = a.flag("--order");
+           denoising = a.flag("--denoising");
+         }))
+    return *exit_code;
   const std::string path = data + "/armadillo.off";
   if(denoising)
     std::printf("Two parts of denoise_mesh(), in seconds (best of 3; 1 from a million vertices); armadillo Loop-subdivided.\n"
@@ -362,6 +376,7 @@ int main(int argc, char* argv[])
                 "total s", "CPU s", "NCC", "simpl", "L,B", "eigen", "ritz", "A_t", "feat.", "GiB", "s/vertex", "region", "coll.",
                 "drift", "features");
   }
+  bool failed = false;
   for(int level = min_level; level <= max_level; ++level)
   {
     std::fflush(stdout);  // or the child would print the parent's buffer again
@@ -374,18 +389,21 @@ int main(int argc, char* argv[])
     int status = 0;
     waitpid(child, &status, 0);
     if(!WIFEXITED(status) || WEXITSTATUS(status) != 0)
+    {
       std::printf("level %d failed (status %d)\n", level, status);
+      failed = true;
+    }
   }
   if(denoising)
   {
     std::printf("\nratios: simplicial / supernodal, parallel / sequential; package: the factorisation that the package\n"
                 "uses at that size. Re-run: build/bin/benchmark_scale_curve --denoising\n");
-    return 0;
+    return failed ? 1 : 0;
   }
   std::printf("\nGiB: peak resident memory of the process for that size (ru_maxrss), subdivision included.\n"
               "feat.: F^10 and its features (detect_multiscale_features, c = 0.8); features: convex/concave.\n"
               "total s: wall clock, mesh in memory -> features; CPU s: user + system time of the process over the same span;\n"
               "s/vertex: total s / vertices.\n"
               "Re-run: build/bin/benchmark_scale_curve [DATA_DIR] [--min-level L] [--max-level L] [--coarse N] [--time T] [--order]\n");
-  return 0;
+  return failed ? 1 : 0;
 }

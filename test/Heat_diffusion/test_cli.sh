@@ -3,20 +3,8 @@
 # Usage: test_cli.sh HEAT_DIFFUSION_BINARY DATA_DIR WORK_DIR
 set -u
 tool=$1 data=$2 work=$3
+source "$(dirname "$0")/command_line_checks.sh"
 rm -rf "$work" && mkdir -p "$work" && cd "$work" || exit 1
-passed=0 failed=0
-pass() { passed=$((passed + 1)); }
-fail() { failed=$((failed + 1)); echo "FAILED: $*"; }
-
-# expect CODE PATTERN -- COMMAND...: exit status CODE and stderr+stdout matching PATTERN
-expect() {
-  local code=$1 pattern=$2; shift 3
-  local out status
-  out=$("$@" 2>&1); status=$?
-  if [ "$status" -ne "$code" ]; then fail "$* -> exit $status, expected $code: $out"; return; fi
-  if [ -n "$pattern" ] && ! grep -qE -- "$pattern" <<<"$out"; then fail "$* -> output lacks '$pattern': $out"; return; fi
-  pass
-}
 
 # success, JSON summary, PLY with the NS property and colours
 expect 0 '"vertices": 6475' -- "$tool" ncc "$data/fandisk.off" -o fandisk_ns.ply --json --quiet

@@ -45,7 +45,7 @@ public:
         {
           if(i + 1 >= argc)
             throw Usage_error("option " + a + " needs a value");
-          values_[a] = argv[++i];
+          values_[a].push_back(argv[++i]);
         }
         else
           throw Usage_error("unknown option " + a);
@@ -76,10 +76,17 @@ public:
     return std::find(set_flags_.begin(), set_flags_.end(), name) != set_flags_.end();
   }
   bool has(const std::string& name) const { return values_.count(name) != 0; }
+  // The option's value (its last, if it is repeated), or `fallback`.
   std::string value(const std::string& name, const std::string& fallback) const
   {
     auto it = values_.find(name);
-    return it == values_.end() ? fallback : it->second;
+    return it == values_.end() ? fallback : it->second.back();
+  }
+  // Every value of a repeated option, in the order given.
+  std::vector<std::string> values(const std::string& name) const
+  {
+    auto it = values_.find(name);
+    return it == values_.end() ? std::vector<std::string>() : it->second;
   }
   const std::vector<std::string>& positional() const { return positional_; }
 
@@ -92,7 +99,7 @@ private:
   }
 
   std::vector<std::string> flags_, valued_, set_flags_, positional_;
-  std::map<std::string, std::string> values_;
+  std::map<std::string, std::vector<std::string> > values_;
 };
 
 // Parses a comma-separated list of non-negative integers ("0,10,40").
