@@ -90,22 +90,46 @@ def ply_field(path):
         return np.frombuffer(f.read(count * dtype.itemsize), dtype=dtype, count=count)["field"]
 
 
+def whole_number(lowest, highest):
+    """An argparse type: a whole number in [lowest, highest] (a usage error otherwise)."""
+    def parse(text):
+        try:
+            value = int(text)
+        except ValueError:
+            raise argparse.ArgumentTypeError(f"not a whole number: '{text}'")
+        if not lowest <= value <= highest:
+            raise argparse.ArgumentTypeError(f"{value} is not in [{lowest}, {highest}]")
+        return value
+    return parse
+
+
+def levels_list(text):
+    """An argparse type: a comma-separated list of subdivision levels from 0 to 3."""
+    return [whole_number(0, 3)(item) for item in text.split(",")]
+
+
 def main():
     parser = argparse.ArgumentParser(description=__doc__.split("\n\n")[0])
     parser.add_argument("--tool", required=True)
     parser.add_argument("--data", required=True)
-    parser.add_argument("--repeat", type=int, default=5)
-    parser.add_argument("--levels", default="0,2", help="Loop subdivision levels of armadillo (0 = fandisk)")
-    parser.add_argument("-k", type=int, default=10)
+    parser.add_argument("--repeat", type=whole_number(1, 100), default=5)
+    parser.add_argument("--levels", type=levels_list, default=[0, 2],
+                        help="Loop subdivision levels of armadillo (0 = fandisk)")
+    parser.add_argument("-k", type=whole_number(0, 100000), default=10)
     parser.add_argument("--verbose", action="store_true", help="print the times of every pair")
     args = parser.parse_args()
+    # checked now: the runs take minutes before the tool is first called
+    if not (os.path.isfile(args.tool) and os.access(args.tool, os.X_OK)):
+        parser.error(f"--tool '{args.tool}' is not an executable file")
+    if not os.path.isdir(args.data):
+        parser.error(f"--data '{args.data}' is not a directory")
 
     print(f"Python binding overhead: HeatDiffusion + NS + {args.k} steps, local kernel, sigma 0.1, t 1; "
           f"{args.repeat} alternating runs of each")
     print(f"{'mesh':>22} {'vertices':>9} {'Python s':>9} {'C++ s':>9} {'overhead':>9}   "
           f"{'medians: Python, C++, overhead':>32}   {'pairs':>8}")
     with tempfile.TemporaryDirectory() as work:
-        for level in [int(x) for x in args.levels.split(",")]:
+        for level in args.levels:
             if level == 0:
                 name, path = "fandisk", os.path.join(args.data, "fandisk.off")
                 V, F = read_mesh(path)

@@ -11,6 +11,14 @@
 # compile_commands.json. Needs GNU time (/usr/bin/time, Debian package `time`).
 # Run it with nothing else compiling: the times are those of one compiler process.
 set -euo pipefail
+usage="usage: compile_cost.sh [BUILD_DIR]   (default: build)"
+case "${1:-}" in
+  -h|--help) echo "$usage"; exit 0 ;;
+  -*) echo "compile_cost.sh: unknown option $1" >&2; echo "$usage" >&2; exit 2 ;;
+esac
+if [ $# -gt 1 ]; then
+  echo "compile_cost.sh: one BUILD_DIR at most" >&2; echo "$usage" >&2; exit 2
+fi
 cd "$(dirname "$0")/../.."
 source_dir=$(pwd)
 build_dir=${1:-build}

@@ -2,10 +2,12 @@
 # The benchmarks' command lines: a benchmark runs for minutes, so -h and --help print
 # its usage, and a typing error (an unknown option, a missing or bad value, a TOOL that
 # cannot run) stops it at once with exit 2, before any work, instead of running it with
-# other settings. Nothing is timed here.
-# Usage: test_benchmark_command_lines.sh BENCHMARK_DIR WORK_DIR
+# other settings. The C++ benchmarks, compile_cost.sh and, given PYTHON (the Python
+# module's interpreter, the module on PYTHONPATH), benchmark_python.py. Nothing is
+# timed here.
+# Usage: test_benchmark_command_lines.sh BENCHMARK_DIR WORK_DIR [PYTHON]
 set -u
-bin=$1 work=$2
+bin=$1 work=$2 python=${3:-}
 source "$(dirname "$0")/command_line_checks.sh"
 rm -rf "$work" && mkdir -p "$work" || exit 1
 
@@ -38,6 +40,21 @@ expect 2 "is not an executable file" -- "$bin/benchmark_mesh_input" "$work/not_e
 expect 2 "--dir '$work/no_such_dir' is not a directory" -- "$bin/benchmark_mesh_input" /bin/true --dir "$work/no_such_dir"
 expect 2 "unknown option --repeats" -- "$bin/benchmark_mesh_input" /bin/true --dir "$work" --repeats 5
 [ -z "$(ls "$work" | grep armadillo)" ] && pass || fail "benchmark_mesh_input wrote its meshes despite a usage error"
+
+compile_cost=$(dirname "$0")/../../benchmark/Heat_diffusion/compile_cost.sh
+expect 0 "^usage: compile_cost.sh" -- bash "$compile_cost" --help
+expect 2 "unknown option --bogus" -- bash "$compile_cost" --bogus
+expect 2 "one BUILD_DIR at most" -- bash "$compile_cost" "$work" "$work"
+
+if [ -n "$python" ]; then
+  script=$(dirname "$0")/../../benchmark/Heat_diffusion/benchmark_python.py
+  expect 0 "^usage: benchmark_python.py" -- "$python" "$script" --help
+  expect 2 "argument --repeat: 0 is not in \[1, 100\]" -- "$python" "$script" --tool /bin/true --data "$work" --repeat 0
+  expect 2 "argument --levels: not a whole number: 'x'" -- "$python" "$script" --tool /bin/true --data "$work" --levels 0,x
+  expect 2 "--tool '$work/no_such_tool' is not an executable file" -- \
+    "$python" "$script" --tool "$work/no_such_tool" --data "$work"
+  expect 2 "--data '$work/no_such_dir' is not a directory" -- "$python" "$script" --tool /bin/true --data "$work/no_such_dir"
+fi
 
 echo "$passed passed, $failed failed"
 [ "$failed" -eq 0 ]
