@@ -51,13 +51,16 @@ std::optional<int> read_command_line(int argc, char** argv, std::vector<std::str
   return std::nullopt;
 }
 
-// The one optional DATA_DIR argument of a benchmark that reads CGAL's meshes.
-inline std::string data_directory(const cli::Arguments& arguments, const std::string& fallback)
+// The one optional argument of a benchmark (`what`: DATA_DIR, the directory of CGAL's
+// meshes, or TOOL), or `fallback` without it.
+inline std::string optional_argument(const cli::Arguments& arguments, const std::string& what,
+                                     const std::string& fallback)
 {
-  if(arguments.positional().size() > 1)
-    throw cli::Usage_error("one DATA_DIR at most, not " + std::to_string(arguments.positional().size()) +
-                           " arguments (" + arguments.positional()[0] + ", " + arguments.positional()[1] + ", ...)");
-  return arguments.positional().empty() ? fallback : arguments.positional()[0];
+  const std::vector<std::string>& given = arguments.positional();
+  if(given.size() > 1)
+    throw cli::Usage_error("one " + what + " at most, not " + std::to_string(given.size()) + " arguments (" +
+                           given[0] + ", " + given[1] + ", ...)");
+  return given.empty() ? fallback : given[0];
 }
 
 } // namespace heat_diffusion_benchmark

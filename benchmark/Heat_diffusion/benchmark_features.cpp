@@ -231,7 +231,7 @@ int main(int argc, char* argv[])
   if(const auto exit_code = heat_diffusion_benchmark::read_command_line(
          argc, argv, {"--shape-filter"}, {"--sigmas", "--steps", "--seeds", "--meshes"}, usage,
          [&](const cli::Arguments& a) {
-           data = heat_diffusion_benchmark::data_directory(a, data);
+           data = heat_diffusion_benchmark::optional_argument(a, "DATA_DIR", data);
            shape_filter = a.flag("--shape-filter");
            if((a.has("--sigmas") || a.has("--steps")) && !shape_filter)
              throw cli::Usage_error("--sigmas and --steps are settings of --shape-filter");

@@ -397,7 +397,7 @@ int main(int argc, char* argv[])
                             "  --eigen-repeats  runs of each eigen solve, 1 to 100 (default 3)\n";
   if(const auto exit_code = heat_diffusion_benchmark::read_command_line(
          argc, argv, {}, {"--repeats", "--eigen-repeats"}, usage, [&](const cli::Arguments& a) {
-           data = heat_diffusion_benchmark::data_directory(a, data);
+           data = heat_diffusion_benchmark::optional_argument(a, "DATA_DIR", data);
            repeats = int(cli::parse_count("--repeats", a.value("--repeats", "21"), 1, 1000));
            eigen_repeats = int(cli::parse_count("--eigen-repeats", a.value("--eigen-repeats", "3"), 1, 100));
          }))

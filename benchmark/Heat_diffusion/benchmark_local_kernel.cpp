@@ -301,7 +301,7 @@ int main(int argc, char** argv)
   if(const auto exit_code = heat_diffusion_benchmark::read_command_line(
          argc, argv, {"--no-table-1", "--no-table-3"}, {"--levels", "--first-level", "--time", "--sigma", "--repeat"},
          usage, [&](const cli::Arguments& a) {
-           data = heat_diffusion_benchmark::data_directory(a, data);
+           data = heat_diffusion_benchmark::optional_argument(a, "DATA_DIR", data);
            levels = a.value("--levels", "3") == "-1" ? -1 : int(cli::parse_count("--levels", a.value("--levels", "3"), 0, 4));
            first_level = int(cli::parse_count("--first-level", a.value("--first-level", "0"), 0, 4));
            if(levels >= 0 && first_level > levels)

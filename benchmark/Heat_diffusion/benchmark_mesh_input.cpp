@@ -134,10 +134,7 @@ int main(int argc, char** argv)
   int levels = 3, repeat = 3;
   if(const auto exit_code = heat_diffusion_benchmark::read_command_line(
          argc, argv, {}, {"--dir", "--levels", "--repeat", "--data"}, usage, [&](const cli::Arguments& a) {
-           if(a.positional().size() > 1)
-             throw cli::Usage_error("one TOOL at most");
-           if(!a.positional().empty())
-             tool = a.positional()[0];
+           tool = heat_diffusion_benchmark::optional_argument(a, "TOOL", tool);
            // checked now: the meshes take minutes to write and read before the tool runs
            if(!std::filesystem::is_regular_file(tool) || access(tool.c_str(), X_OK) != 0)
              throw cli::Usage_error("TOOL '" + tool + "' is not an executable file");

@@ -342,7 +342,7 @@ int main(int argc, char* argv[])
   if(const auto exit_code = heat_diffusion_benchmark::read_command_line(
          argc, argv, {"--order", "--denoising"}, {"--min-level", "--max-level", "--coarse", "--time"}, usage,
          [&](const cli::Arguments& a) {
-           data = heat_diffusion_benchmark::data_directory(a, data);
+           data = heat_diffusion_benchmark::optional_argument(a, "DATA_DIR", data);
            min_level = int(cli::parse_count("--min-level", a.value("--min-level", "0"), 0, 4));
            max_level = int(cli::parse_count("--max-level", a.value("--max-level", "3"), 0, 4));
            if(min_level > max_level)

@@ -35,6 +35,7 @@ expect 2 "--noise must be a number > 0" -- "$bin/benchmark_denoising" --noise 0.
 # benchmark_mesh_input checks its TOOL and DIR before it writes and reads its meshes
 expect 2 "TOOL '$work/no_such_tool' is not an executable file" -- \
   "$bin/benchmark_mesh_input" "$work/no_such_tool" --dir "$work" --levels 0
+expect 2 'one TOOL at most, not 2 arguments' -- "$bin/benchmark_mesh_input" /bin/true /bin/true --dir "$work"
 touch "$work/not_executable"
 expect 2 "is not an executable file" -- "$bin/benchmark_mesh_input" "$work/not_executable" --dir "$work" --levels 0
 expect 2 "--dir '$work/no_such_dir' is not a directory" -- "$bin/benchmark_mesh_input" /bin/true --dir "$work/no_such_dir"
