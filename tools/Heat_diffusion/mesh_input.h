@@ -14,6 +14,7 @@
 #include <CGAL/IO/polygon_soup_io.h>
 #include <CGAL/Polygon_mesh_processing/triangulate_faces.h>
 #include <CGAL/Surface_mesh.h>
+#include <CGAL/boost/graph/helpers.h>
 
 #include <algorithm>
 #include <cctype>
@@ -45,6 +46,10 @@ typedef CGAL::Surface_mesh<Kernel::Point_3> Mesh;
 //   triangulation in the plane of the face, reads a null face handle (undefined
 //   behaviour) when a non-planar face's projection intersects itself (found by
 //   fuzzing). The hole filling it offers instead works in 3D, on any polygon.
+// - On a polygon with two vertices at one point, it can leave a broken halfedge
+//   structure (a halfedge whose target is no vertex of the mesh: the package then read
+//   out of bounds, found by fuzzing). The result is checked as the mesh builder checks
+//   a mesh read from a file.
 inline bool triangulate_polygon_faces(Mesh& mesh)
 {
   double largest = 0;
@@ -65,7 +70,8 @@ inline bool triangulate_polygon_faces(Mesh& mesh)
                                       std::ldexp(p.z(), -exponent));
   }
   if(!CGAL::Polygon_mesh_processing::triangulate_faces(
-         scaled, CGAL::parameters::use_delaunay_triangulation(false)))
+         scaled, CGAL::parameters::use_delaunay_triangulation(false)) ||
+     !CGAL::is_valid_polygon_mesh(scaled))
     return false;
   for(auto v : vertices(scaled))
     scaled.point(v) = mesh.point(v);

@@ -198,24 +198,43 @@ inline void check_off_stream(std::istream& is, std::uintmax_t size)
 //   the body;
 // - element counts and list lengths larger than the file can hold: it sizes a list
 //   from its declared length before reading it, and a 150-byte file declaring a face
-//   of 4e9 vertices made it allocate 16 GB and get killed.
+//   of 4e9 vertices made it allocate 16 GB and get killed;
+// - a header without an end_header line, or a body that ends (or stops being
+//   numbers) before its last element: it reads on from the failed stream, takes the
+//   list length it could not read from uninitialised memory and sized the list from
+//   it (an allocation of 5.7 GB, found by fuzzing).
 // Walks the body once, property by property (ASCII or binary, either byte order);
 // anything else it does not understand is left to CGAL's reader, which rejects it
 // cleanly. Leaves `is` at an unspecified position.
 inline void check_ply_stream(std::istream& is, std::uintmax_t size)
 {
   auto fail = [](const std::string& what) { throw Input_error("cannot read the PLY file: " + what); };
-  auto type_size = [](const std::string& type) -> std::size_t {
-    if(type == "char" || type == "int8" || type == "uchar" || type == "uint8")
-      return 1;
-    if(type == "short" || type == "int16" || type == "ushort" || type == "uint16")
-      return 2;
-    if(type == "int" || type == "int32" || type == "uint" || type == "uint32" || type == "float" || type == "float32")
-      return 4;
-    if(type == "double" || type == "float64")
-      return 8;
-    return 0;
+  // The bytes of a PLY type and its largest value (0 bytes: not a PLY type).
+  struct Type
+  {
+    std::size_t bytes;
+    double largest;
   };
+  auto type_of = [](const std::string& type) -> Type {
+    if(type == "char" || type == "int8")
+      return {1, 127.};
+    if(type == "uchar" || type == "uint8")
+      return {1, 255.};
+    if(type == "short" || type == "int16")
+      return {2, 32767.};
+    if(type == "ushort" || type == "uint16")
+      return {2, 65535.};
+    if(type == "int" || type == "int32")
+      return {4, 2147483647.};
+    if(type == "uint" || type == "uint32")
+      return {4, 4294967295.};
+    if(type == "float" || type == "float32")
+      return {4, std::numeric_limits<double>::infinity()};
+    if(type == "double" || type == "float64")
+      return {8, std::numeric_limits<double>::infinity()};
+    return {0, 0.};
+  };
+  auto type_size = [&](const std::string& type) { return type_of(type).bytes; };
   struct Property
   {
     bool list;
@@ -224,12 +243,16 @@ inline void check_ply_stream(std::istream& is, std::uintmax_t size)
   struct Element
   {
     std::string name;
+    std::string declared;  // the count as the header writes it
     double count;
     std::vector<Property> properties;
   };
-  std::string line, format;
-  if(!std::getline(is, line) || line.compare(0, 3, "ply") != 0)
-    return;
+  // The first two lines as CGAL's reader reads them: the first word "ply", and the
+  // format as the second word of the second line, whatever its first.
+  std::string line, first_word, format;
+  if(!std::getline(is, line) || !(std::istringstream(line) >> first_word) || first_word != "ply" ||
+     !std::getline(is, line) || !(std::istringstream(line) >> first_word >> format))
+    return;  // CGAL's reader rejects the file itself
   std::vector<Element> elements;
   bool header_ended = false;
   while(!header_ended && std::getline(is, line))
@@ -237,13 +260,15 @@ inline void check_ply_stream(std::istream& is, std::uintmax_t size)
     std::istringstream words(line);
     std::string keyword;
     words >> keyword;
-    if(keyword == "format")
-      words >> format;
-    else if(keyword == "element")
+    if(keyword == "element")
     {
+      // Digits only: CGAL's reader takes the count as an unsigned integer, and would read
+      // "1e3" as 1 and "-5" as 2^64 - 5.
       Element e;
-      if(!(words >> e.name >> e.count) || !(e.count >= 0) || e.count != std::floor(e.count))
+      if(!(words >> e.name >> e.declared) || e.declared.size() > 19 ||
+         e.declared.find_first_not_of("0123456789") != std::string::npos)
         fail("the header line '" + line + "' has no valid element count");
+      e.count = std::stod(e.declared);
       elements.push_back(e);
     }
     else if(keyword == "property")
@@ -274,26 +299,50 @@ inline void check_ply_stream(std::istream& is, std::uintmax_t size)
   }
   const bool ascii = format == "ascii";
   const bool big_endian = format == "binary_big_endian";
-  if(!header_ended || (!ascii && !big_endian && format != "binary_little_endian"))
-    return;
+  if(!ascii && !big_endian && format != "binary_little_endian")
+    return;  // CGAL's reader rejects the format itself
+  if(!header_ended)
+    fail("the header has no end_header line");
   const std::streamoff body = is.tellg();
   if(body < 0)
     return;
   const double remaining = double(size) - double(body);
+  auto ends_before = [&](const Element& e, double k) {
+    std::ostringstream os;
+    os << "the file ends" << (ascii && !is.eof() ? ", or has something that is not a number," : "") << " in the "
+       << e.name << " element " << std::size_t(k) << " (the header declares " << e.declared << ")";
+    fail(os.str());
+  };
+  // Skips `n` values of the given type.
+  auto skip = [&](const Element& e, double k, std::uintmax_t n, const std::string& type) {
+    if(ascii)
+    {
+      std::string word;
+      for(std::uintmax_t i = 0; i < n; ++i)
+        if(!(is >> word))
+          ends_before(e, k);
+    }
+    else
+    {
+      const std::streamsize bytes = std::streamsize(n * type_size(type));
+      if(!is.ignore(bytes) || is.gcount() != bytes)
+        ends_before(e, k);
+    }
+  };
   // Reads a list length: a whole number from 0 to what the rest of the file can hold.
   auto list_length = [&](const Element& e, double k, const Property& p, double bound) -> std::uintmax_t {
     double x = 0;
     if(ascii)
     {
       if(!(is >> x))
-        return std::uintmax_t(-1);  // truncated or garbage: CGAL's reader says so
+        ends_before(e, k);
     }
     else
     {
       const std::size_t bytes = type_size(p.count_type);
       unsigned char b[8] = {0};
       if(!is.read(reinterpret_cast<char*>(b), std::streamsize(bytes)))
-        return std::uintmax_t(-1);
+        ends_before(e, k);
       std::uint64_t u = 0;
       for(std::size_t i = 0; i < bytes; ++i)
         u |= std::uint64_t(b[big_endian ? bytes - 1 - i : i]) << (8 * i);
@@ -302,6 +351,14 @@ inline void check_ply_stream(std::istream& is, std::uintmax_t size)
         x = -1;
       else
         x = double(u);
+    }
+    // CGAL's reader would wrap a length its type does not hold: char 200 to 2^64 - 56.
+    if(ascii && x > type_of(p.count_type).largest)
+    {
+      std::ostringstream os;
+      os << "the " << e.name << " element " << std::size_t(k) << " has a list '" << p.name << "' of length " << x
+         << ", more than its type " << p.count_type << " holds";
+      fail(os.str());
     }
     if(!(x >= 0) || x != std::floor(x) || x > bound)
     {
@@ -314,41 +371,24 @@ inline void check_ply_stream(std::istream& is, std::uintmax_t size)
   };
   for(const Element& e : elements)
   {
-    // Every element takes a byte at least (two characters in ASCII).
-    if(!e.properties.empty() && e.count > remaining / (ascii ? 2 : 1))
+    // Every element takes a byte at least (two characters in ASCII). An element without
+    // properties takes none, but CGAL's reader still loops over it (and adds a point
+    // per vertex): its count is bounded the same way.
+    if(e.count > remaining / (ascii ? 2 : 1))
     {
       std::ostringstream os;
-      os << "the header declares " << e.count << " " << e.name << " elements, more than the file of " << size
+      os << "the header declares " << e.declared << " " << e.name << " elements, more than the file of " << size
          << " bytes holds";
       fail(os.str());
     }
+    if(e.properties.empty())
+      continue;
     for(double k = 0; k < e.count; ++k)
       for(const Property& p : e.properties)
       {
-        if(!p.list)
-        {
-          if(ascii)
-          {
-            std::string word;
-            if(!(is >> word))
-              return;
-          }
-          else if(!is.ignore(std::streamsize(type_size(p.value_type))))
-            return;
-          continue;
-        }
-        const std::uintmax_t n = list_length(e, k, p, ascii ? remaining / 2 : remaining / double(type_size(p.value_type)));
-        if(n == std::uintmax_t(-1))
-          return;
-        if(ascii)
-        {
-          std::string word;
-          for(std::uintmax_t i = 0; i < n; ++i)
-            if(!(is >> word))
-              return;
-        }
-        else if(!is.ignore(std::streamsize(n * type_size(p.value_type))))
-          return;
+        const std::uintmax_t n =
+            p.list ? list_length(e, k, p, ascii ? remaining / 2 : remaining / double(type_size(p.value_type))) : 1;
+        skip(e, k, n, p.value_type);
       }
   }
 }
