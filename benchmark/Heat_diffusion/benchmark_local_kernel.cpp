@@ -302,7 +302,15 @@ int main(int argc, char** argv)
          argc, argv, {"--no-table-1", "--no-table-3"}, {"--levels", "--first-level", "--time", "--sigma", "--repeat"},
          usage, [&](const cli::Arguments& a) {
            data = heat_diffusion_benchmark::optional_argument(a, "DATA_DIR", data);
-           levels = a.value("--levels", "3") == "-1" ? -1 : int(cli::parse_count("--levels", a.value("--levels", "3"), 0, 4));
+           const std::string levels_text = a.value("--levels", "3");
+           try
+           {
+             levels = levels_text == "-1" ? -1 : int(cli::parse_count("--levels", levels_text, 0, 4));
+           }
+           catch(const cli::Usage_error&)  // its message would say "from 0 to 4"
+           {
+             throw cli::Usage_error("--levels must be a whole number from -1 (no table 2) to 4, not '" + levels_text + "'");
+           }
            first_level = int(cli::parse_count("--first-level", a.value("--first-level", "0"), 0, 4));
            if(levels >= 0 && first_level > levels)
              throw cli::Usage_error("--first-level " + std::to_string(first_level) + " is above --levels " +

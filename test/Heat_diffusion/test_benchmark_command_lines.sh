@@ -20,7 +20,8 @@ done
 
 # values: missing, not a number, out of range, inconsistent
 expect 2 'option --levels needs a value' -- "$bin/benchmark_local_kernel" --levels
-expect 2 '--levels must be a whole number from 0 to 4' -- "$bin/benchmark_local_kernel" --levels x
+expect 2 "--levels must be a whole number from -1 \(no table 2\) to 4, not 'x'" -- "$bin/benchmark_local_kernel" --levels x
+expect 2 "--levels must be a whole number from -1 \(no table 2\) to 4, not '-2'" -- "$bin/benchmark_local_kernel" --levels -2
 expect 2 '--first-level 3 is above --levels 2' -- "$bin/benchmark_local_kernel" --levels 2 --first-level 3
 expect 2 '--time must be a number > 0' -- "$bin/benchmark_local_kernel" --time 0
 expect 2 'one DATA_DIR at most' -- "$bin/benchmark_heat_diffusion" "$work" "$work"
