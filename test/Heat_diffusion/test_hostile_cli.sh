@@ -70,6 +70,9 @@ declare -A rejected=(
   # CGAL's PLY reader read on from a failed stream: a list length from uninitialised memory
   [header_without_end.ply]='cannot read the PLY file: the header has no end_header line'
   [truncated_before_list_length.ply]='cannot read the PLY file: the file ends in the face element 3 \(the header declares 4\)'
+  # coordinates of type int: CGAL's reader dereferenced a null pointer (a crash)
+  [integer_coordinates.ply]="cannot read the PLY file: the vertex property 'x' is of type int; the reader takes coordinates of type float or double"
+  [no_coordinates.ply]="cannot read the PLY file: the vertex element has no property 'x'"
   # a list length that does not fit its type: CGAL's reader wrapped char 200 to 2^64 - 56
   [list_length_beyond_its_type.ply]='the face element 2 has a list .vertex_indices. of length 200, more than its type char holds'
   [truncated_binary.ply]='cannot read the PLY file: the file ends in the face element 3 \(the header declares 4\)'

@@ -10,6 +10,7 @@
 
 #include "cli_errors.h"
 
+#include <algorithm>
 #include <cctype>
 #include <cmath>
 #include <cstdint>
@@ -303,6 +304,22 @@ inline void check_ply_stream(std::istream& is, std::uintmax_t size)
     return;  // CGAL's reader rejects the format itself
   if(!header_ended)
     fail("the header has no end_header line");
+  // CGAL's reader takes the first property of each name as a coordinate of type float or
+  // double; another type made it dereference a null pointer (a crash), and a missing
+  // one gave the coordinate 0.
+  for(const Element& e : elements)
+    if(e.name == "vertex" || e.name == "vertices")
+      for(const char* coordinate : {"x", "y", "z"})
+      {
+        auto p = std::find_if(e.properties.begin(), e.properties.end(),
+                              [&](const Property& q) { return q.name == coordinate; });
+        if(p == e.properties.end())
+          fail("the " + e.name + " element has no property '" + coordinate + "'");
+        const std::string& type = p->value_type;
+        if(p->list || !(type == "float" || type == "float32" || type == "double" || type == "float64"))
+          fail("the " + e.name + " property '" + coordinate + "' is " + (p->list ? "a list" : "of type " + p->value_type) +
+               "; the reader takes coordinates of type float or double");
+      }
   const std::streamoff body = is.tellg();
   if(body < 0)
     return;
