@@ -199,11 +199,16 @@ inline void check_off_stream(std::istream& is, std::uintmax_t size)
 //   the body;
 // - element counts and list lengths larger than the file can hold: it sizes a list
 //   from its declared length before reading it, and a 150-byte file declaring a face
-//   of 4e9 vertices made it allocate 16 GB and get killed;
+//   of 4e9 vertices made it allocate 16 GB and get killed; it also loops over the
+//   elements of a type without properties, and adds a point for each vertex;
+// - list lengths their type does not hold, which it wraps around;
 // - a header without an end_header line, or a body that ends (or stops being
 //   numbers) before its last element: it reads on from the failed stream, takes the
 //   list length it could not read from uninitialised memory and sized the list from
-//   it (an allocation of 5.7 GB, found by fuzzing).
+//   it (an allocation of 5.7 GB, found by fuzzing);
+// - vertex coordinates x, y, z missing, or not of type float or double (a crash).
+// The header is read as that reader reads it (the format is the second word of the
+// second line, whatever the first), so that no file passes unchecked.
 // Walks the body once, property by property (ASCII or binary, either byte order);
 // anything else it does not understand is left to CGAL's reader, which rejects it
 // cleanly. Leaves `is` at an unspecified position.
