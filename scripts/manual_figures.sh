@@ -2,22 +2,41 @@
 # Makes the user manual's figures (doc/Heat_diffusion/fig/*.png) with the command-line
 # tool and scripts/render.py, on CGAL's fandisk: what sigma, t, m and k do, the heat
 # conservation plot, and one figure per application (shape filtering on armadillo too). Run it after scripts/setup.sh;
-# the figures are committed, so only a change of the maths needs a new run.
-#   bash scripts/manual_figures.sh [OUTPUT_DIR]   (default doc/Heat_diffusion/fig)
+# the figures are committed, so only a change of the maths needs a new run. Its last
+# step composes the README's overview figure, hd_overview.png, from the pictures made
+# before it; --overview-only runs that step alone, from the pictures in OUTPUT_DIR (no
+# tool, no build needed).
+#   bash scripts/manual_figures.sh [--overview-only] [OUTPUT_DIR]   (default doc/Heat_diffusion/fig)
 # HEAT_DIFFUSION_BUILD_DIR names another build folder (default build).
 set -euo pipefail
 cd "$(dirname "$0")/.."
+overview_only=0
+if [ "${1:-}" = --overview-only ]; then overview_only=1; shift; fi
 build=${HEAT_DIFFUSION_BUILD_DIR:-build}
 tool=$build/bin/heat_diffusion
 mesh=$build/data/meshes/fandisk.off
 fig=${1:-doc/Heat_diffusion/fig}
+
+py=python3
+if /usr/bin/python3 -c 'import matplotlib, numpy' 2>/dev/null; then py=/usr/bin/python3; fi
+
+# The README's figure: one picture of each capability, cut from the figures below (the
+# NS and its diffusion, the isotropic baseline, features, denoising, enhancement).
+overview() {
+  echo "== overview (the README's figure)"
+  "$py" scripts/render.py composite \
+    "$fig/hd_scales.png@1/3" "$fig/hd_scales.png@3/3" "$fig/hd_sigma.png@3/3" "$fig/hd_features.png@2/3" \
+    "$fig/hd_denoising.png@1/3" "$fig/hd_denoising.png@2/3" \
+    "$fig/hd_enhancement_armadillo.png@2/3" "$fig/hd_enhancement_armadillo.png@3/3" \
+    --titles "Normal Signature|diffused, σ = 0.1, k = 40|isotropic, k = 10|features, k = 10|noisy|denoised|armadillo|enhanced (1, 3, 3)" \
+    --columns 4 --height 170 -o "$fig/hd_overview.png"
+}
+if [ "$overview_only" = 1 ]; then overview; ls -l "$fig/hd_overview.png"; exit 0; fi
+
 [ -x "$tool" ] || { echo "$tool is missing: run scripts/setup.sh first" >&2; exit 1; }
 mkdir -p "$fig"
 work=$(mktemp -d)
 trap 'rm -rf "$work"' EXIT
-
-py=python3
-if /usr/bin/python3 -c 'import matplotlib, numpy' 2>/dev/null; then py=/usr/bin/python3; fi
 # Three small pictures per figure: 2.6 inches at 80 dpi keep each PNG near 100 KB.
 picture() { local png=$1; shift; "$py" scripts/render.py mesh "$@" --size 2.6 --dpi 80 -o "$fig/$png"; }
 diffuse() { "$tool" diffuse "$mesh" --quiet "$@"; }
@@ -98,4 +117,5 @@ armadillo=$build/data/meshes/armadillo.off
   --titles "smoothing, weights 0, 0, 1|input (armadillo)|enhancement, weights 1, 3, 3" \
   --size 3.2 --dpi 90 --zoom 2.2 --view 10,90 -o "$fig/hd_enhancement_armadillo.png"
 
+overview
 ls -l "$fig"

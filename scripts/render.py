@@ -13,6 +13,12 @@
   render.py noise IN.off -o OUT.off [--amplitude 0.2] [--seed 1]
       a noisy copy: Gaussian noise along the vertex normals, of standard deviation
       amplitude * mean edge length.
+  render.py composite IMAGE[@I/N] [...] -o OUT.png [--titles T1|T2|...] [--columns C]
+            [--height PX]
+      composes pictures already rendered (the PNGs of `mesh`) into one figure, C per
+      row: IMAGE@I/N is the I-th of N equal side-by-side pictures of IMAGE (1-based);
+      each picture loses its own title band and white margins, is drawn PX pixels
+      high and gets the title given here (the README's overview figure).
   render.py error REFERENCE MESH [--json]
       the vertex distance between two meshes with the same vertices (RMS and maximum,
       relative to the bounding-box diagonal of REFERENCE).
@@ -406,6 +412,95 @@ def cmd_error(args):
     print(json.dumps(result))
 
 
+# --------------------------------------------------------------------------- composite
+
+def _ink(image):
+    """Rows x columns mask of the pixels that are not (nearly) white or transparent."""
+    rgb = image[..., :3].astype(float)
+    if rgb.max() > 1.0:
+        rgb = rgb / 255.0
+    alpha = image[..., 3] if image.shape[-1] == 4 else np.ones(image.shape[:2])
+    return (alpha > 0.1) & (rgb.min(axis=-1) < 0.94)
+
+
+def _panel(spec):
+    """The picture named by IMAGE or IMAGE@I/N, without its title band and margins."""
+    path, _, part = spec.partition("@")
+    image = plt.imread(path)
+    if image.ndim == 2:
+        image = np.stack([image] * 3, axis=-1)
+    if part:
+        try:
+            i, n = (int(x) for x in part.split("/"))
+        except ValueError:
+            raise ValueError(f"{spec}: the part of a strip is I/N, e.g. {path}@2/3")
+        if not 1 <= i <= n:
+            raise ValueError(f"{spec}: I must be in 1..N")
+        w = image.shape[1]
+        image = image[:, round((i - 1) * w / n):round(i * w / n)]
+    ink = _ink(image)
+    rows = np.nonzero(ink.any(axis=1))[0]
+    if len(rows) == 0:
+        raise ValueError(f"{spec}: the picture is blank")
+    # A title of `render.py mesh` is ink in the top 7 % (its axes start at 93 % of the
+    # height): drop it, up to the first white row below it, or the whole 7 % where the
+    # mesh reaches into the band.
+    h = image.shape[0]
+    band = int(math.ceil(0.07 * h))
+    if rows[0] < band:
+        # (from half the band on: the white rows inside a line of text, above the
+        # letters' bodies, are not its end)
+        gaps = np.nonzero(~ink[band // 2:2 * band].any(axis=1))[0]
+        top = band // 2 + gaps[0] if len(gaps) else band
+        if ink[top:].any():
+            image, ink = image[top:], ink[top:]
+    rows = np.nonzero(ink.any(axis=1))[0]
+    cols = np.nonzero(ink.any(axis=0))[0]
+    margin = 2
+    r0, r1 = max(rows[0] - margin, 0), min(rows[-1] + margin + 1, image.shape[0])
+    c0, c1 = max(cols[0] - margin, 0), min(cols[-1] + margin + 1, image.shape[1])
+    return image[r0:r1, c0:c1]
+
+
+def cmd_composite(args):
+    titles = args.titles.split("|") if args.titles else [None] * len(args.inputs)
+    if len(titles) != len(args.inputs):
+        raise ValueError("--titles: one title per picture, separated by '|'")
+    if args.columns < 1:
+        raise ValueError("--columns: at least 1")
+    panels = [_panel(spec) for spec in args.inputs]
+    # Layout in pixels: every picture args.height high, a title band above each row.
+    height, gap, band = args.height, 8, (22 if any(titles) else 0)
+    rows = [list(range(i, min(i + args.columns, len(panels)))) for i in range(0, len(panels), args.columns)]
+    widths = [height * p.shape[1] / p.shape[0] for p in panels]
+    row_widths = [sum(widths[i] for i in row) + gap * (len(row) - 1) for row in rows]
+    total_w = max(row_widths) + 2 * gap
+    total_h = len(rows) * (height + band) + (len(rows) + 1) * gap
+    dpi = 100
+    fig = plt.figure(figsize=(total_w / dpi, total_h / dpi), dpi=dpi)
+    fig.patch.set_facecolor("white")
+    for r, row in enumerate(rows):
+        x = (total_w - row_widths[r]) / 2
+        y = total_h - (r + 1) * (height + band + gap)  # bottom of the pictures, from below
+        for i in row:
+            ax = fig.add_axes([x / total_w, y / total_h, widths[i] / total_w, height / total_h])
+            ax.imshow(panels[i], interpolation="antialiased")
+            ax.set_axis_off()
+            if titles[i]:
+                ax.set_title(titles[i], fontsize=10, pad=3)
+            x += widths[i] + gap
+    # RGB, a palette of 256 colours: the shaded meshes need no more, and the file stays small.
+    fig.canvas.draw()
+    rgb = np.asarray(fig.canvas.buffer_rgba())[..., :3]
+    plt.close(fig)
+    from PIL import Image
+    out = Image.fromarray(rgb).quantize(colors=256, method=Image.Quantize.MEDIANCUT, dither=Image.Dither.NONE)
+    os.makedirs(os.path.dirname(os.path.abspath(args.output)), exist_ok=True)
+    tmp = args.output + ".tmp.png"
+    out.save(tmp, optimize=True)
+    os.replace(tmp, args.output)
+
+
 def save(fig, path):
     os.makedirs(os.path.dirname(os.path.abspath(path)), exist_ok=True)
     tmp = path + ".tmp.png"
@@ -444,6 +539,13 @@ def main():
     n.add_argument("--amplitude", type=float, default=0.2, help="in mean edge lengths (default 0.2)")
     n.add_argument("--seed", type=int, default=1)
     n.set_defaults(func=cmd_noise)
+    c = sub.add_parser("composite", help="compose rendered pictures into one figure")
+    c.add_argument("inputs", nargs="+", metavar="IMAGE[@I/N]")
+    c.add_argument("-o", "--output", required=True)
+    c.add_argument("--titles", help="one title per picture, separated by '|'")
+    c.add_argument("--columns", type=int, default=4, help="pictures per row (default 4)")
+    c.add_argument("--height", type=int, default=170, help="height of each picture in pixels (default 170)")
+    c.set_defaults(func=cmd_composite)
     e = sub.add_parser("error", help="vertex distance between two meshes")
     e.add_argument("reference")
     e.add_argument("mesh")
