@@ -8,6 +8,7 @@
 #define CGAL_HEAT_DIFFUSION_H
 
 #include <CGAL/Heat_diffusion/parameters.h>
+#include <CGAL/Heat_diffusion/parameter_defaults.h>
 #include <CGAL/Heat_diffusion/vertex_normals.h>
 #include <CGAL/Heat_diffusion/normal_controlled_coordinates.h>
 #include <CGAL/Heat_diffusion/reconstruction.h>
@@ -17,6 +18,7 @@
 #include <CGAL/Heat_diffusion/Anisotropic_heat_diffusion.h>
 #include <CGAL/Heat_diffusion/multiscale_features.h>
 #include <CGAL/Heat_diffusion/decomposition.h>
+#include <CGAL/Heat_diffusion/denoising_report.h>
 #include <CGAL/Heat_diffusion/denoising.h>
 
 #endif // CGAL_HEAT_DIFFUSION_H

@@ -2,7 +2,10 @@
 // SPDX-License-Identifier: LGPL-3.0-or-later
 //
 // cgal_heat_diffusion: the package from Python, on numpy arrays. A mesh is given as
-// V (n x 3 float64) and F (m x 3 integer); it becomes a Surface_mesh<Epick::Point_3>
+// V (n x 3 numbers) and F (m x 3 integers), any array-like that numpy reads (float32 or
+// float64, any integer type, C or Fortran order, views, lists), converted once, with a
+// copy only where the layout is not already C-contiguous float64 (V) or native integers
+// (F); it becomes a Surface_mesh<Epick::Point_3>
 // whose vertex i is row i of V, and every result comes back in that order, whatever
 // order the package works in internally (large meshes are renumbered along a Hilbert
 // curve). The C++ work runs without the GIL; the package's progress callback takes the
@@ -24,8 +27,10 @@
 #include <CGAL/Heat_diffusion/denoising.h>
 #include <CGAL/Heat_diffusion/multiscale_features.h>
 #include <CGAL/Heat_diffusion/normal_controlled_coordinates.h>
+#include <CGAL/Heat_diffusion/parameter_defaults.h>
 #include <CGAL/Heat_diffusion/reconstruction.h>
 
+#include "mesh_repair.h"  // the tool's repair (tools/Heat_diffusion/)
 #include "surface_mesh_from_triangles.h"
 
 #include <Eigen/Sparse>
@@ -74,16 +79,38 @@ auto without_gil(Work&& work) -> decltype(work())
 
 std::string type_name(py::handle object) { return py::str(py::type::handle_of(object).attr("__name__")); }
 
-// A numpy array that the checks below have accepted, seen without copy.
-py::array checked_array(py::handle object, const std::string& function, const std::string& name)
+std::string dtype_text(const py::array& a) { return py::str(a.dtype()); }
+
+// `object` as a numpy array (itself if it is one, else what numpy.asarray() makes of it:
+// lists, tuples, objects with __array__), refused unless its elements are of one of
+// `kinds` (numpy's dtype kinds: "fiu" numbers, "iu" integers).
+py::array numeric_array(py::handle object, const std::string& function, const std::string& name, const char* kinds)
 {
-  if(!py::isinstance<py::array>(object))
-    invalid(function, name + " must be a numpy array, not " + type_name(object));
-  py::array a = py::reinterpret_borrow<py::array>(object);
-  if(!(a.flags() & py::array::c_style))
-    invalid(function, name + " is not C-contiguous (a slice or a transposed view?); pass np.ascontiguousarray(" +
-                          name + ")");
+  py::array a;
+  if(py::isinstance<py::array>(object))
+    a = py::reinterpret_borrow<py::array>(object);
+  else
+  {
+    try
+    {
+      a = py::module_::import("numpy").attr("asarray")(object);
+    }
+    catch(py::error_already_set&)
+    {
+      invalid(function, name + " must be an array of numbers, not " + type_name(object));
+    }
+  }
+  if(std::strchr(kinds, a.dtype().kind()) == nullptr)
+    invalid(function, name + " must be an array of " + (std::strlen(kinds) == 2 ? "integers" : "numbers") +
+                          ", not of " + dtype_text(a) + (py::isinstance<py::array>(object) ? "" : " (" + type_name(object) + ")"));
   return a;
+}
+
+// A numeric array as C-contiguous float64: the same array where it is one already, else
+// one converted copy.
+py::array_t<double, py::array::c_style> float64_array(const py::array& a)
+{
+  return py::array_t<double, py::array::c_style | py::array::forcecast>::ensure(a);
 }
 
 std::string shape_text(const py::array& a)
@@ -96,24 +123,31 @@ std::string shape_text(const py::array& a)
   return os.str();
 }
 
-std::string dtype_text(const py::array& a) { return py::str(a.dtype()); }
-
-bool is_float64(const py::array& a) { return a.dtype().is(py::dtype::of<double>()); }
-
-// V as n x 3 doubles, read only.
-const double* vertex_array(const py::array& V, const std::string& function)
+// V as n x 3 doubles (float64_array()), checked.
+py::array_t<double, py::array::c_style> vertex_array(py::handle object, const std::string& function,
+                                                     const std::string& name = "V")
 {
+  const py::array V = numeric_array(object, function, name, "fiu");
   if(V.ndim() != 2 || V.shape(1) != 3)
-    invalid(function, "V must have shape (n, 3), not " + shape_text(V));
-  if(!is_float64(V))
-    invalid(function, "V must be float64, not " + dtype_text(V) + "; pass V.astype(np.float64)");
-  return static_cast<const double*>(V.data());
+    invalid(function, name + " must have shape (n, 3), not " + shape_text(V));
+  py::array_t<double, py::array::c_style> values = float64_array(V);
+  const double* p = values.data();
+  for(std::size_t i = 0; i < std::size_t(values.shape(0)); ++i)
+    if(!std::isfinite(p[3 * i]) || !std::isfinite(p[3 * i + 1]) || !std::isfinite(p[3 * i + 2]))
+    {
+      std::ostringstream os;
+      os << name << "[" << i << "] is (" << p[3 * i] << ", " << p[3 * i + 1] << ", " << p[3 * i + 2]
+         << "), not a finite point";
+      invalid(function, os.str());
+    }
+  return values;
 }
 
 // F as m x 3 vertex indices in [0, n), each face with three different vertices,
 // read as its integer type T (no widening through floating point).
 template <typename T>
-void read_faces(const py::array& F, std::size_t n, const std::string& function, std::vector<std::uint32_t>& faces)
+void read_faces(const py::array& F, std::size_t n, const std::string& function, std::vector<std::uint32_t>& faces,
+                bool degenerate_faces)
 {
   const T* in = static_cast<const T*>(F.data());
   const std::size_t m = faces.size() / 3;
@@ -136,42 +170,48 @@ void read_faces(const py::array& F, std::size_t n, const std::string& function, 
       faces[3 * f + c] = std::uint32_t(i);
     }
     const std::uint32_t* t = &faces[3 * f];
-    if(t[0] == t[1] || t[1] == t[2] || t[0] == t[2])
+    if(!degenerate_faces && (t[0] == t[1] || t[1] == t[2] || t[0] == t[2]))
     {
       std::ostringstream os;
       os << "face " << f << " (vertices " << t[0] << ", " << t[1] << ", " << t[2]
-         << ") is degenerate: it repeats a vertex";
+         << ") is degenerate: it repeats a vertex; cgal_heat_diffusion.repair(V, F) removes such faces";
       invalid(function, os.str());
     }
   }
 }
 
-// F checked, as 3 m vertex indices (Surface_mesh numbers its vertices in 32 bits).
-std::vector<std::uint32_t> face_array(const py::array& F, std::size_t n, const std::string& function)
+// F checked, as 3 m vertex indices (Surface_mesh numbers its vertices in 32 bits), read
+// in its own integer type from a C-contiguous array of native byte order (a copy of F
+// where it is not one already); `degenerate_faces`: whether a face may repeat a vertex
+// (repair() removes such faces).
+std::vector<std::uint32_t> face_array(py::handle object, std::size_t n, const std::string& function,
+                                      bool degenerate_faces = false)
 {
+  py::array F = numeric_array(object, function, "F", "iu");
   if(F.ndim() != 2 || F.shape(1) != 3)
     invalid(function, "F must have shape (m, 3) (triangles), not " + shape_text(F));
+  if(!(F.flags() & py::array::c_style) || !F.dtype().attr("isnative").cast<bool>())
+    F = py::module_::import("numpy").attr("ascontiguousarray")(F, py::arg("dtype") = F.dtype().attr("newbyteorder")("="));
   const char kind = F.dtype().kind();
   const py::ssize_t size = F.itemsize();
-  if(!((kind == 'i' || kind == 'u') && (size == 1 || size == 2 || size == 4 || size == 8)) ||
-     !(F.dtype().attr("isnative").cast<bool>()))
-    invalid(function, "F must be an array of integers (int32 or int64), not " + dtype_text(F));
+  if(!(size == 1 || size == 2 || size == 4 || size == 8))
+    invalid(function, "F must be an array of integers of 8 to 64 bits, not " + dtype_text(F));
   std::vector<std::uint32_t> faces(3 * std::size_t(F.shape(0)));
   if(kind == 'i')
     switch(size)
     {
-    case 1: read_faces<std::int8_t>(F, n, function, faces); break;
-    case 2: read_faces<std::int16_t>(F, n, function, faces); break;
-    case 4: read_faces<std::int32_t>(F, n, function, faces); break;
-    default: read_faces<std::int64_t>(F, n, function, faces); break;
+    case 1: read_faces<std::int8_t>(F, n, function, faces, degenerate_faces); break;
+    case 2: read_faces<std::int16_t>(F, n, function, faces, degenerate_faces); break;
+    case 4: read_faces<std::int32_t>(F, n, function, faces, degenerate_faces); break;
+    default: read_faces<std::int64_t>(F, n, function, faces, degenerate_faces); break;
     }
   else
     switch(size)
     {
-    case 1: read_faces<std::uint8_t>(F, n, function, faces); break;
-    case 2: read_faces<std::uint16_t>(F, n, function, faces); break;
-    case 4: read_faces<std::uint32_t>(F, n, function, faces); break;
-    default: read_faces<std::uint64_t>(F, n, function, faces); break;
+    case 1: read_faces<std::uint8_t>(F, n, function, faces, degenerate_faces); break;
+    case 2: read_faces<std::uint16_t>(F, n, function, faces, degenerate_faces); break;
+    case 4: read_faces<std::uint32_t>(F, n, function, faces, degenerate_faces); break;
+    default: read_faces<std::uint64_t>(F, n, function, faces, degenerate_faces); break;
     }
   return faces;
 }
@@ -202,7 +242,7 @@ void add_faces_one_by_one(const double* points, std::size_t n, const std::vector
       os << "face " << f << " (vertices " << t[0] << ", " << t[1] << ", " << t[2]
          << ") makes the mesh non-manifold: one of its edges already has two faces, or a face that runs along "
             "it in the same direction (inconsistent orientation), or it joins two fans at a vertex; "
-            "CGAL::Polygon_mesh_processing::orient_polygon_soup() repairs such soups";
+            "cgal_heat_diffusion.repair(V, F) repairs such soups (CGAL's orient_polygon_soup() and the rest)";
       invalid(function, os.str());
     }
   }
@@ -213,13 +253,12 @@ void add_faces_one_by_one(const double* points, std::size_t n, const std::vector
 // the same mesh, or the error of the face that Surface_mesh refuses).
 std::unique_ptr<Mesh> make_mesh(py::handle V_object, py::handle F_object, const std::string& function)
 {
-  const py::array V = checked_array(V_object, function, "V");
-  const py::array F = checked_array(F_object, function, "F");
-  const double* points = vertex_array(V, function);
+  const py::array_t<double, py::array::c_style> V = vertex_array(V_object, function);
+  const double* points = V.data();
   const std::size_t n = std::size_t(V.shape(0));
   if(n >= std::size_t((std::numeric_limits<Mesh::size_type>::max)()))
     invalid(function, "V has too many vertices for a Surface_mesh (32-bit indices)");
-  const std::vector<std::uint32_t> faces = face_array(F, n, function);
+  const std::vector<std::uint32_t> faces = face_array(F_object, n, function);
   auto mesh = std::make_unique<Mesh>();
   without_gil([&] {
     if(!cgal_heat_diffusion_python::build_manifold_surface_mesh(points, n, faces.data(), faces.size() / 3, *mesh))
@@ -280,11 +319,10 @@ std::string mesh_difference(const Mesh& a, const Mesh& b)
 py::tuple compare_mesh_constructions(py::object V_object, py::object F_object)
 {
   const std::string function = "_compare_mesh_constructions";
-  const py::array V = checked_array(V_object, function, "V");
-  const py::array F = checked_array(F_object, function, "F");
-  const double* points = vertex_array(V, function);
+  const py::array_t<double, py::array::c_style> V = vertex_array(V_object, function);
+  const double* points = V.data();
   const std::size_t n = std::size_t(V.shape(0));
-  const std::vector<std::uint32_t> faces = face_array(F, n, function);
+  const std::vector<std::uint32_t> faces = face_array(F_object, n, function);
   Mesh fast;
   if(!cgal_heat_diffusion_python::build_manifold_surface_mesh(points, n, faces.data(), faces.size() / 3, fast))
   {
@@ -302,22 +340,21 @@ py::tuple compare_mesh_constructions(py::object V_object, py::object F_object)
   return py::make_tuple(true, py::none());
 }
 
-// A field given by input vertex order: a 1-D float64 array of n finite values. (The
-// package checks finiteness too, but its message names its C++ function, and, on
+// A field given by input vertex order: a 1-D array-like of n finite numbers, as float64.
+// (The package checks finiteness too, but its message names its C++ function, and, on
 // meshes it renumbers, its own index of the vertex.)
 std::vector<double> field_array(py::handle object, std::size_t n, const std::string& function,
                                 const std::string& name = "field")
 {
-  const py::array a = checked_array(object, function, name);
+  const py::array a = numeric_array(object, function, name, "fiu");
   if(a.ndim() != 1 || std::size_t(a.shape(0)) != n)
   {
     std::ostringstream os;
     os << name << " must have shape (" << n << ",) (one value per vertex), not " << shape_text(a);
     invalid(function, os.str());
   }
-  if(!is_float64(a))
-    invalid(function, name + " must be float64, not " + dtype_text(a));
-  const double* p = static_cast<const double*>(a.data());
+  const py::array_t<double, py::array::c_style> values = float64_array(a);
+  const double* p = values.data();
   for(std::size_t i = 0; i < n; ++i)
     if(!std::isfinite(p[i]))
     {
@@ -420,17 +457,19 @@ auto interruptible(Work&& work)
 
 // The diffusion options shared by every function that diffuses, named as the C++
 // named parameters and the tool's options: sigma, time, kernel ("local", "spectral" or
-// None: local unless m or coarse is given, the package's Heat_kernel_method::automatic),
-// m (number_of_eigenpairs), coarse (coarse_vertex_count), scale_invariant.
+// None: the package's Heat_kernel_method::automatic), m (number_of_eigenpairs), coarse
+// (coarse_vertex_count), scale_invariant, normalization. Each is empty where the caller
+// gave None: the package's default then applies, whatever it is (the binding keeps no
+// copy of it).
 struct Diffusion_options
 {
-  double sigma = 0.1;
-  double time = 1.;
-  HD::Heat_kernel_method method = HD::Heat_kernel_method::local;
-  long long eigenpairs = 150;  // checked by the package (number_of_eigenpairs must be positive)
-  long long coarse = -1;      // the package's automatic coarse level; the package checks the others
-  bool scale_invariant = false;
-  HD::Operator_normalization normalization = HD::Operator_normalization::balanced;
+  std::optional<double> sigma;
+  std::optional<double> time;
+  std::optional<HD::Heat_kernel_method> method;
+  std::optional<long long> eigenpairs;  // checked by the package (number_of_eigenpairs must be positive)
+  std::optional<long long> coarse;      // the package checks it; a negative one is refused below
+  std::optional<bool> scale_invariant;
+  std::optional<HD::Operator_normalization> normalization;
 };
 
 // A Python or numpy integer (anything with __index__ but a bool or an array of one or
@@ -489,8 +528,9 @@ std::optional<double> optional_number(const py::object& value, const std::string
 {
   if(value.is_none())
     return std::nullopt;
-  // (numpy's float64 is a float; an array is not a number, although numpy gives it __index__)
-  if(py::isinstance<py::float_>(value))
+  // (numpy's float64 is a float; numpy's other floating-point scalars, float32 among
+  // them, are numpy.floating; an array is not a number, although numpy gives it __index__)
+  if(py::isinstance<py::float_>(value) || py::isinstance(value, py::module_::import("numpy").attr("floating")))
     return value.cast<double>();
   if(!is_whole_number(value))
     invalid(function, name + " must be a number or None, not " + type_name(value));
@@ -512,11 +552,19 @@ long long bounded_whole_number(const py::handle& value, const std::string& funct
   return k;
 }
 
-// decompose()'s levels, as the tool's --levels: the bands take levels x n doubles,
-// allocated before any work.
+// decompose()'s levels, as the tool's --levels (None: the package's defaults::detail_levels):
+// the bands take levels x n doubles, allocated before any work.
 std::size_t checked_levels(const py::handle& levels, const std::string& function)
 {
+  if(levels.is_none())
+    return HD::defaults::detail_levels;
   return std::size_t(bounded_whole_number(levels, function, "levels", 1, 1000));
+}
+
+// The package's feature scales (defaults::feature_scales), the steps of features() by default.
+std::vector<std::size_t> feature_scales()
+{
+  return std::vector<std::size_t>(HD::defaults::feature_scales.begin(), HD::defaults::feature_scales.end());
 }
 
 // An optional whole number (None: the C++ function's own default).
@@ -528,13 +576,20 @@ std::optional<long long> optional_whole_number(const py::object& value, const st
   return whole_number(value, function, name);
 }
 
-Diffusion_options diffusion_options(const std::string& function, double sigma, double time, const py::object& kernel,
-                                    const py::object& m, const py::object& coarse, bool scale_invariant)
+Diffusion_options diffusion_options(const std::string& function, const py::object& sigma, const py::object& time,
+                                    const py::object& kernel, const py::object& m, const py::object& coarse,
+                                    const py::object& scale_invariant_object)
 {
   Diffusion_options o;
-  o.sigma = sigma;
-  o.time = time;
-  o.scale_invariant = scale_invariant;
+  o.sigma = optional_number(sigma, function, "sigma");
+  o.time = optional_number(time, function, "time");
+  if(!scale_invariant_object.is_none())
+  {
+    if(!py::isinstance<py::bool_>(scale_invariant_object))
+      invalid(function, "scale_invariant must be True, False or None, not " + type_name(scale_invariant_object));
+    o.scale_invariant = scale_invariant_object.cast<bool>();
+  }
+  const bool scale_invariant = o.scale_invariant.value_or(false);
   // The values of m and coarse are the package's to check, with its messages; only a
   // negative coarse is refused here: the package reads it as its automatic choice,
   // which the Python caller asks for with None.
@@ -543,14 +598,12 @@ Diffusion_options diffusion_options(const std::string& function, double sigma, d
   if(!coarse.is_none())
   {
     o.coarse = whole_number(coarse, function, "coarse");
-    if(o.coarse < 0)
+    if(*o.coarse < 0)
       invalid(function, "coarse (coarse_vertex_count) must not be negative (None: the package's automatic "
-                        "choice), not " + std::to_string(o.coarse));
+                        "choice), not " + std::to_string(*o.coarse));
   }
   const bool eigenpairs_requested = !m.is_none() || !coarse.is_none() || scale_invariant;
-  if(kernel.is_none())
-    o.method = eigenpairs_requested ? HD::Heat_kernel_method::spectral : HD::Heat_kernel_method::local;
-  else
+  if(!kernel.is_none())
   {
     if(!py::isinstance<py::str>(kernel))
       invalid(function, "kernel must be 'local', 'spectral' or None, not " + type_name(kernel));
@@ -599,8 +652,15 @@ py::array_t<double> to_input_order(const Indexed& indexed, const Mesh& mesh, con
   return result;
 }
 
-std::vector<std::size_t> step_list(const py::object& steps, const std::string& function, bool& single)
+// The steps: a whole number (`single`), or a list of them; None: `default_steps`, a list.
+std::vector<std::size_t> step_list(const py::object& steps, const std::string& function, bool& single,
+                                   const std::vector<std::size_t>& default_steps)
 {
+  if(steps.is_none())
+  {
+    single = false;
+    return default_steps;
+  }
   // Python and numpy integers (is_whole_number()), or a sequence or array of them.
   auto checked = [&](const py::handle& s) {
     if(!is_whole_number(s))
@@ -675,8 +735,8 @@ class Heat_diffusion
 public:
   // `function` names the caller in the binding's errors: the class, or the free
   // function that builds the diffusion.
-  Heat_diffusion(py::object V, py::object F, double sigma, double time, py::object kernel, py::object m,
-                 py::object coarse, bool scale_invariant, py::object normalization, py::object progress,
+  Heat_diffusion(py::object V, py::object F, py::object sigma, py::object time, py::object kernel, py::object m,
+                 py::object coarse, py::object scale_invariant, py::object normalization, py::object progress,
                  const std::string& function = "HeatDiffusion")
     : mesh_(make_mesh(V, F, function))
   {
@@ -721,7 +781,11 @@ public:
   py::object diffuse(py::object field, py::object steps) const
   {
     bool single = false;
-    const std::vector<std::size_t> ks = step_list(steps, "HeatDiffusion.diffuse", single);
+    // None: one result, after the package's defaults::number_of_steps
+    const std::vector<std::size_t> ks =
+        steps.is_none() ? std::vector<std::size_t>(1, HD::defaults::number_of_steps)
+                        : step_list(steps, "HeatDiffusion.diffuse", single, {});
+    single = single || steps.is_none();
     const Eigen::VectorXd f0 =
         to_package_order(*diffusion_, *mesh_, field_array(field, number_of_vertices(), "HeatDiffusion.diffuse"));
     const std::vector<Eigen::VectorXd> fields = interruptible_diffusion(f0, ks);
@@ -796,7 +860,7 @@ public:
     return d;
   }
 
-  py::list features(py::object field, py::object steps, double feature_threshold) const
+  py::list features(py::object field, py::object steps, py::object feature_threshold) const
   {
     return features_as("HeatDiffusion.features", field, steps, feature_threshold);
   }
@@ -804,10 +868,12 @@ public:
   // features(), with errors in the name of `function` (the method, or the free function
   // that calls it)
   py::list features_as(const std::string& function, py::object field, py::object steps,
-                       double feature_threshold) const
+                       py::object feature_threshold_object) const
   {
     bool single = false;
-    const std::vector<std::size_t> ks = step_list(steps, function, single);
+    const std::vector<std::size_t> ks = step_list(steps, function, single, feature_scales());
+    const std::optional<double> feature_threshold =
+        optional_number(feature_threshold_object, function, "feature_threshold");
     std::vector<double> values = field.is_none() ? normal_signature().cast<std::vector<double> >()
                                                  : field_array(field, number_of_vertices(), function);
     const auto features = interruptible([&](const auto& progress) {
@@ -828,10 +894,10 @@ public:
                          py::object steps_object) const
   {
     const std::size_t levels = checked_levels(levels_object, function);
+    const std::optional<long long> steps_per_level = optional_whole_number(steps_object, function, "steps_per_level");
     const std::size_t n = number_of_vertices();
     std::vector<double> values = field.is_none() ? normal_signature().cast<std::vector<double> >()
                                                  : field_array(field, n, function);
-    const std::optional<long long> steps_per_level = optional_whole_number(steps_object, function, "steps_per_level");
     py::array_t<double> bands({py::ssize_t(levels), py::ssize_t(n)});
     py::array_t<double> residual(static_cast<py::ssize_t>(n));
     double* band_data = bands.mutable_data();
@@ -840,13 +906,9 @@ public:
       std::vector<Input_order_field> maps;
       for(std::size_t j = 0; j < levels; ++j)
         maps.push_back(Input_order_field{band_data + j * n});
-      // Only if given: decompose_field() keeps its own default.
-      if(steps_per_level)
-        HD::decompose_field(*diffusion_, Input_order_field{values.data()}, maps, Input_order_field{residual_data},
-                            HD::parameters::combine(progress, HD::parameters::steps_per_level(*steps_per_level)));
-      else
-        HD::decompose_field(*diffusion_, Input_order_field{values.data()}, maps, Input_order_field{residual_data},
-                            progress);
+      // None: decompose_field()'s own default.
+      HD::decompose_field(*diffusion_, Input_order_field{values.data()}, maps, Input_order_field{residual_data},
+                          HD::parameters::combine(progress, HD::parameters::steps_per_level(steps_per_level)));
     });
     return py::make_tuple(bands, residual);
   }
@@ -884,20 +946,20 @@ py::array_t<double> normal_controlled_coordinates(py::object V, py::object F)
   return result;
 }
 
-py::list multiscale_features(py::object V, py::object F, py::object field, py::object steps, double feature_threshold,
-                             double sigma, double time, py::object kernel, py::object m, py::object coarse,
-                             bool scale_invariant, py::object progress)
+py::list multiscale_features(py::object V, py::object F, py::object field, py::object steps,
+                             py::object feature_threshold, py::object sigma, py::object time, py::object kernel,
+                             py::object m, py::object coarse, py::object scale_invariant, py::object progress)
 {
   const std::string function = "multiscale_features";
   bool single = false;
-  step_list(steps, function, single);  // before the diffusion is built
+  step_list(steps, function, single, feature_scales());  // before the diffusion is built
   const Heat_diffusion diffusion(V, F, sigma, time, kernel, m, coarse, scale_invariant, py::none(), progress, function);
   return diffusion.features_as(function, field, steps, feature_threshold);
 }
 
 py::tuple decompose(py::object V, py::object F, py::object field, py::object levels, py::object steps_per_level,
-                    double sigma, double time, py::object kernel, py::object m, py::object coarse,
-                    bool scale_invariant, py::object progress)
+                    py::object sigma, py::object time, py::object kernel, py::object m, py::object coarse,
+                    py::object scale_invariant, py::object progress)
 {
   const std::string function = "decompose";
   checked_levels(levels, function);  // before the diffusion is built
@@ -909,17 +971,16 @@ py::tuple decompose(py::object V, py::object F, py::object field, py::object lev
 py::array_t<double> synthesize(py::object bands_object, py::object residual_object, py::object weights_object)
 {
   const std::string function = "synthesize";
-  const py::array residual_array = checked_array(residual_object, function, "residual");
+  const py::array residual_array = numeric_array(residual_object, function, "residual", "fiu");
   if(residual_array.ndim() != 1)
     invalid(function, "residual must have shape (n,), not " + shape_text(residual_array));
   const std::size_t n = std::size_t(residual_array.shape(0));
   const std::vector<double> residual = field_array(residual_object, n, function, "residual");
-  const py::array bands_array = checked_array(bands_object, function, "bands");
-  if(bands_array.ndim() != 2 || std::size_t(bands_array.shape(1)) != n)
+  const py::array bands_input = numeric_array(bands_object, function, "bands", "fiu");
+  if(bands_input.ndim() != 2 || std::size_t(bands_input.shape(1)) != n)
     invalid(function, "bands must have shape (L, " + std::to_string(n) + ") (one row per band), not " +
-                          shape_text(bands_array));
-  if(!is_float64(bands_array))
-    invalid(function, "bands must be float64, not " + dtype_text(bands_array));
+                          shape_text(bands_input));
+  const py::array_t<double, py::array::c_style> bands_array = float64_array(bands_input);
   const std::vector<double> weights =
       HD::internal::checked_weights(number_list(weights_object, function, "weights"), "synthesize");
   const std::size_t levels = std::size_t(bands_array.shape(0));
@@ -930,7 +991,7 @@ py::array_t<double> synthesize(py::object bands_object, py::object residual_obje
     invalid(function, os.str());
   }
   std::vector<Eigen::VectorXd> bands(levels + 1);
-  const double* b = static_cast<const double*>(bands_array.data());
+  const double* b = bands_array.data();
   for(std::size_t j = 0; j < levels; ++j)
     bands[j] = Eigen::Map<const Eigen::VectorXd>(b + j * n, Eigen::Index(n));
   bands[levels] = Eigen::Map<const Eigen::VectorXd>(residual.data(), Eigen::Index(n));
@@ -943,8 +1004,8 @@ py::array_t<double> synthesize(py::object bands_object, py::object residual_obje
 }
 
 py::array_t<double> filter_shape(py::object V, py::object F, py::object weights_object, py::object steps_object,
-                                 py::object anchor_object, double sigma, double time, py::object kernel, py::object m,
-                                 py::object coarse, bool scale_invariant, py::object progress)
+                                 py::object anchor_object, py::object sigma, py::object time, py::object kernel,
+                                 py::object m, py::object coarse, py::object scale_invariant, py::object progress)
 {
   const std::string function = "filter_shape";
   auto mesh = make_mesh(V, F, function);
@@ -957,28 +1018,29 @@ py::array_t<double> filter_shape(py::object V, py::object F, py::object weights_
   const std::optional<double> anchor_weight = optional_number(anchor_object, function, "anchor_weight");
   Python_progress guard(std::move(progress));
   const auto np = diffusion_parameters(o, guard.callback());
-  auto run = [&](const auto& parameters) { guard.run([&] { HD::filter_shape(*mesh, weights, parameters); }); };
-  // Only the parameters given are passed: filter_shape() keeps its own defaults.
-  if(steps_per_level && anchor_weight)
-    run(HD::parameters::combine(np, HD::parameters::steps_per_level(*steps_per_level),
-                                HD::parameters::anchor_weight(*anchor_weight)));
-  else if(steps_per_level)
-    run(HD::parameters::combine(np, HD::parameters::steps_per_level(*steps_per_level)));
-  else if(anchor_weight)
-    run(HD::parameters::combine(np, HD::parameters::anchor_weight(*anchor_weight)));
-  else
-    run(np);
+  // None: filter_shape()'s own defaults.
+  guard.run([&] {
+    HD::filter_shape(*mesh, weights,
+                     HD::parameters::combine(np, HD::parameters::steps_per_level(steps_per_level),
+                                             HD::parameters::anchor_weight(anchor_weight)));
+  });
   return mesh_points(*mesh);
 }
 
-py::array_t<double> heat_kernel_signature(py::object V, py::object F, double time, double sigma, py::object m,
-                                          py::object coarse, bool scale_invariant, py::object progress)
+// The classical signature's sigma and t where None (defaults::heat_kernel_signature).
+py::array_t<double> heat_kernel_signature(py::object V, py::object F, py::object time_object, py::object sigma,
+                                          py::object m, py::object coarse, py::object scale_invariant,
+                                          py::object progress)
 {
-  const auto mesh = make_mesh(V, F, "heat_kernel_signature");
-  Diffusion_options o = diffusion_options("heat_kernel_signature", sigma, 1., py::str("spectral"), m, coarse,
-                                          scale_invariant);
+  const std::string function = "heat_kernel_signature";
+  const auto mesh = make_mesh(V, F, function);
+  Diffusion_options o = diffusion_options(function, sigma, py::none(), py::str("spectral"), m, coarse, scale_invariant);
+  if(!o.sigma)
+    o.sigma = HD::defaults::heat_kernel_signature::sigma;
+  const double time =
+      optional_number(time_object, function, "time").value_or(HD::defaults::heat_kernel_signature::time);
   if(!(time > 0) || !std::isfinite(time))
-    invalid("heat_kernel_signature", "time must be positive and finite");
+    invalid(function, "time must be positive and finite");
   Python_progress guard(std::move(progress));
   const auto np = diffusion_parameters(o, guard.callback());
   std::vector<double> hks(mesh->number_of_vertices());
@@ -990,53 +1052,58 @@ py::array_t<double> heat_kernel_signature(py::object V, py::object F, double tim
   return make_vector(hks);
 }
 
-py::array_t<double> denoise(py::object V, py::object F, const std::string& method, py::object iterations_object,
-                            py::object steps_object, double sigma, double time, py::object kernel, py::object m,
-                            py::object coarse, double anchor_weight, py::object normal_sigma,
-                            double displacement_limit, py::object progress)
+// Every argument None is left to denoise_mesh(), whose defaults depend on the method
+// and, for the normal widths and the stop, on the mesh.
+py::array_t<double> denoise(py::object V, py::object F, py::object method_object, py::object iterations_object,
+                            py::object steps_object, py::object sigma, py::object time, py::object kernel,
+                            py::object m, py::object coarse, py::object anchor_object, py::object normal_sigma,
+                            py::object displacement_object, py::object progress)
 {
   const std::string function = "denoise";
   auto mesh = make_mesh(V, F, function);
-  HD::Denoising_method denoising = HD::Denoising_method::normal_filtering;
-  if(method == "signature_diffusion")
-    denoising = HD::Denoising_method::signature_diffusion;
-  else if(method != "normal_filtering")
-    invalid(function, "method must be 'normal_filtering' or 'signature_diffusion', not '" + method + "'");
-  const bool filtering = denoising == HD::Denoising_method::normal_filtering;
-  // The defaults of denoise_mesh(), which depend on the method.
-  const long long iterations =
-      iterations_object.is_none()
-          ? (filtering ? 100 : 2)
-          : bounded_whole_number(iterations_object, function, "number_of_iterations", 0,
-                                 (std::numeric_limits<unsigned>::max)());
-  const long long steps =
-      steps_object.is_none() ? (filtering ? 2 : 1) : bounded_whole_number(steps_object, function, "number_of_steps", 0);
-  const Diffusion_options o = diffusion_options(function, sigma, time, kernel, m, coarse, false);
+  std::optional<HD::Denoising_method> method;
+  if(!method_object.is_none())
+  {
+    const std::string name = py::isinstance<py::str>(method_object) ? method_object.cast<std::string>() : "";
+    if(name == "normal_filtering")
+      method = HD::Denoising_method::normal_filtering;
+    else if(name == "signature_diffusion")
+      method = HD::Denoising_method::signature_diffusion;
+    else
+      invalid(function, "method must be 'normal_filtering', 'signature_diffusion' or None, not " +
+                            (name.empty() ? type_name(method_object) : "'" + name + "'"));
+  }
+  std::optional<unsigned> iterations;
+  if(!iterations_object.is_none())
+    iterations = unsigned(bounded_whole_number(iterations_object, function, "number_of_iterations", 0,
+                                               (std::numeric_limits<unsigned>::max)()));
+  std::optional<std::size_t> steps;
+  if(!steps_object.is_none())
+    steps = std::size_t(bounded_whole_number(steps_object, function, "number_of_steps", 0));
+  const Diffusion_options o = diffusion_options(function, sigma, time, kernel, m, coarse, py::none());
+  const std::optional<double> anchor_weight = optional_number(anchor_object, function, "anchor_weight");
+  const std::optional<double> sigma_of_normals = optional_number(normal_sigma, function, "normal_sigma");
+  const std::optional<double> displacement_limit = optional_number(displacement_object, function, "displacement_limit");
   Python_progress guard(std::move(progress));
   const auto np = HD::parameters::combine(
-      HD::parameters::denoising_method(denoising), CGAL::parameters::number_of_iterations(unsigned(iterations)),
-      HD::parameters::number_of_steps(std::size_t(steps)), HD::parameters::displacement_limit(displacement_limit),
-      HD::parameters::sigma(o.sigma), HD::parameters::time(o.time), HD::parameters::kernel_method(o.method),
-      HD::parameters::number_of_eigenpairs(o.eigenpairs), HD::parameters::coarse_vertex_count(o.coarse),
-      HD::parameters::anchor_weight(anchor_weight), HD::parameters::progress_callback(guard.callback()));
-  // None: the default depends on the noise, left to denoise_mesh()
-  const std::optional<double> sigma_of_normals = optional_number(normal_sigma, function, "normal_sigma");
-  if(!sigma_of_normals)
-    guard.run([&] { HD::denoise_mesh(*mesh, np); });
-  else
-    guard.run([&] {
-      HD::denoise_mesh(*mesh, HD::parameters::combine(np, HD::parameters::normal_sigma(*sigma_of_normals)));
-    });
+      HD::parameters::denoising_method(method), CGAL::parameters::number_of_iterations(iterations),
+      HD::parameters::number_of_steps(steps), HD::parameters::displacement_limit(displacement_limit),
+      HD::parameters::normal_sigma(sigma_of_normals), HD::parameters::sigma(o.sigma), HD::parameters::time(o.time),
+      HD::parameters::kernel_method(o.method), HD::parameters::number_of_eigenpairs(o.eigenpairs),
+      HD::parameters::coarse_vertex_count(o.coarse), HD::parameters::anchor_weight(anchor_weight),
+      HD::parameters::progress_callback(guard.callback()));
+  guard.run([&] { HD::denoise_mesh(*mesh, np); });
   return mesh_points(*mesh);
 }
 
-py::array_t<double> reconstruct(py::object V, py::object F, py::object ns_object, double anchor_weight,
+py::array_t<double> reconstruct(py::object V, py::object F, py::object ns_object, py::object anchor_object,
                                 py::object normals_object)
 {
   const std::string function = "reconstruct";
   auto mesh = make_mesh(V, F, function);
   const std::size_t n = mesh->number_of_vertices();
   std::vector<double> ns = field_array(ns_object, n, function, "ns");
+  const std::optional<double> anchor_weight = optional_number(anchor_object, function, "anchor_weight");
   if(normals_object.is_none())
     without_gil([&] {
       HD::reconstruct_from_normal_signature(*mesh, Input_order_field{ns.data()},
@@ -1044,12 +1111,11 @@ py::array_t<double> reconstruct(py::object V, py::object F, py::object ns_object
     });
   else
   {
-    const py::array normals = checked_array(normals_object, function, "normals");
-    if(normals.ndim() != 2 || std::size_t(normals.shape(0)) != n || normals.shape(1) != 3 || !is_float64(normals))
-      invalid(function, "normals must be a float64 array of shape (" + std::to_string(n) + ", 3), not " +
-                            dtype_text(normals) + " " + shape_text(normals));
-    std::vector<double> copy(static_cast<const double*>(normals.data()),
-                             static_cast<const double*>(normals.data()) + 3 * n);
+    const py::array_t<double, py::array::c_style> normals = vertex_array(normals_object, function, "normals");
+    if(std::size_t(normals.shape(0)) != n)
+      invalid(function, "normals must have shape (" + std::to_string(n) + ", 3) (one per vertex), not " +
+                            shape_text(normals));
+    std::vector<double> copy(normals.data(), normals.data() + 3 * n);
     without_gil([&] {
       HD::reconstruct_from_normal_signature(
           *mesh, Input_order_field{ns.data()},
@@ -1058,6 +1124,43 @@ py::array_t<double> reconstruct(py::object V, py::object F, py::object ns_object
     });
   }
   return mesh_points(*mesh);
+}
+
+// The tool's repair on arrays (repair_polygon_soup_to_mesh(), CGAL's repair functions):
+// the repaired V and F, and for every row of the new V the row of the input it comes from.
+py::tuple repair(py::object V_object, py::object F_object)
+{
+  const std::string function = "repair";
+  const py::array_t<double, py::array::c_style> V = vertex_array(V_object, function);
+  const std::size_t n = std::size_t(V.shape(0));
+  const std::vector<std::uint32_t> faces = face_array(F_object, n, function, true);
+  std::vector<Point> points;
+  points.reserve(n);
+  for(std::size_t i = 0; i < n; ++i)
+    points.emplace_back(V.data()[3 * i], V.data()[3 * i + 1], V.data()[3 * i + 2]);
+  std::vector<std::vector<std::size_t> > polygons;
+  polygons.reserve(faces.size() / 3);
+  for(std::size_t f = 0; 3 * f < faces.size(); ++f)
+    polygons.push_back({faces[3 * f], faces[3 * f + 1], faces[3 * f + 2]});
+  Mesh mesh;
+  heat_diffusion_cli::Repair_report report;
+  try
+  {
+    without_gil([&] { report = heat_diffusion_cli::repair_polygon_soup_to_mesh(std::move(points), std::move(polygons), mesh); });
+  }
+  catch(const heat_diffusion_cli::Input_error& e)
+  {
+    invalid(function, std::string("cannot be repaired into a mesh: ") + e.what());
+  }
+  py::array_t<std::int64_t> repaired_faces({py::ssize_t(mesh.number_of_faces()), py::ssize_t(3)});
+  std::int64_t* out = repaired_faces.mutable_data();
+  std::size_t k = 0;
+  for(auto f : mesh.faces())
+    for(Vertex v : vertices_around_face(mesh.halfedge(f), mesh))
+      out[k++] = std::int64_t(v.idx());
+  py::array_t<std::int64_t> origin(static_cast<py::ssize_t>(report.origin.size()));
+  std::copy(report.origin.begin(), report.origin.end(), origin.mutable_data());
+  return py::make_tuple(mesh_points(mesh), repaired_faces, origin);
 }
 
 // Loop subdivision (CGAL::Subdivision_method_3): the benchmark makes its large meshes
@@ -1079,50 +1182,86 @@ py::tuple loop_subdivision(py::object V, py::object F, int iterations)
   return py::make_tuple(mesh_points(*mesh), faces);
 }
 
-const char* const diffusion_arguments_doc =
-    "sigma: edge-weight width of eq. 10 (small keeps features); time: t of one step, on the mesh rescaled\n"
-    "to area = vertex count; kernel: 'local', 'spectral' or None (local unless m or coarse is given);\n"
-    "m: number_of_eigenpairs of the spectral kernel (default 150); coarse: coarse_vertex_count of its\n"
-    "eigen solve (None: automatic, 0: none); scale_invariant: the kernel of eq. 14 (spectral);\n"
-    "normalization (HeatDiffusion): 'balanced' (None, the default: A_t doubly stochastic) or 'columns' (the paper's);\n"
-    "progress: None or a callable f(fraction) called during the construction; returning False cancels\n"
-    "it with RuntimeError (None continues). Ctrl-C cancels it too (KeyboardInterrupt).\n";
+// A number as the docstrings print it: 0.1, 150, inf.
+std::string number_text(double x)
+{
+  std::ostringstream os;
+  os << x;
+  return os.str();
+}
+
+// The defaults the docstrings state, read from the package (defaults::).
+std::string diffusion_arguments_doc()
+{
+  namespace D = HD::defaults;
+  return "Every keyword left out or None takes the package's default (the C++ function's own):\n"
+         "sigma: edge-weight width of eq. 10 (default " + number_text(D::sigma) + "; small keeps features);\n"
+         "time: t of one step, on the mesh rescaled to area = vertex count (default " + number_text(D::time) + ");\n"
+         "kernel: 'local', 'spectral' or None (Heat_kernel_method::automatic: local unless m, coarse or\n"
+         "scale_invariant asks for eigenpairs); m: number_of_eigenpairs of the spectral kernel (default " +
+         std::to_string(D::number_of_eigenpairs) + ");\n"
+         "coarse: coarse_vertex_count of its eigen solve (None: automatic, 0: none); scale_invariant: the\n"
+         "kernel of eq. 14 (spectral); normalization (HeatDiffusion): 'balanced' (the default: A_t doubly\n"
+         "stochastic) or 'columns' (the paper's); progress: None or a callable f(fraction) called during the\n"
+         "construction; returning False cancels it with RuntimeError (None continues). Ctrl-C cancels it too\n"
+         "(KeyboardInterrupt).\n";
+}
+
+std::string feature_scales_text()
+{
+  std::string text;
+  for(std::size_t k : HD::defaults::feature_scales)
+    text += (text.empty() ? "" : ", ") + std::to_string(k);
+  return "[" + text + "]";
+}
 
 } // namespace
 
 PYBIND11_MODULE(cgal_heat_diffusion, module)
 {
+  namespace D = HD::defaults;
   module.doc() =
       "CGAL Heat_diffusion (multi-scale anisotropic heat diffusion) on numpy arrays.\n\n"
-      "A mesh is V (n x 3, float64, C-contiguous) and F (m x 3 integer triangles). Results are in the\n"
-      "order of the rows of V. Invalid input (shapes, dtypes, non-contiguous arrays, NaN, indices out of\n"
-      "range, non-manifold or degenerate meshes, parameters) raises ValueError with the package's message.";
+      "A mesh is V (n x 3 numbers) and F (m x 3 integer triangles): any array-like that numpy reads\n"
+      "(float32 or float64 coordinates, any integer type for the faces, C or Fortran order, slices and\n"
+      "views, nested lists), converted once; a copy is made only where V is not C-contiguous float64 or\n"
+      "F not C-contiguous integers of native byte order. Fields are 1-D array-likes of numbers.\n"
+      "Results are in the order of the rows of V. Every keyword left out or None takes the C++ function's\n"
+      "own default. Invalid input (shapes, non-numeric or non-integer arrays, NaN, indices out of range,\n"
+      "non-manifold or degenerate meshes, parameters) raises ValueError naming the argument.";
 
+  const std::string diffusion_doc = diffusion_arguments_doc();
   py::class_<Heat_diffusion>(module, "HeatDiffusion",
-                             (std::string("The operator A_t of the mesh (V, F), built once, applied many times.\n") +
-                              diffusion_arguments_doc)
+                             ("The operator A_t of the mesh (V, F), built once, applied many times.\n" + diffusion_doc)
                                  .c_str())
-      .def(py::init<py::object, py::object, double, double, py::object, py::object, py::object, bool, py::object,
-                    py::object>(),
-           py::arg("V"), py::arg("F"), py::kw_only(), py::arg("sigma") = 0.1, py::arg("time") = 1.0,
+      .def(py::init<py::object, py::object, py::object, py::object, py::object, py::object, py::object, py::object,
+                    py::object, py::object>(),
+           py::arg("V"), py::arg("F"), py::kw_only(), py::arg("sigma") = py::none(), py::arg("time") = py::none(),
            py::arg("kernel") = py::none(), py::arg("m") = py::none(), py::arg("coarse") = py::none(),
-           py::arg("scale_invariant") = false, py::arg("normalization") = py::none(), py::arg("progress") = py::none())
-      .def("diffuse", &Heat_diffusion::diffuse, py::arg("field"), py::arg("steps") = 1,
-           "F^k = A_t^k F^0. steps: one k (returns an (n,) array) or a list of them (returns a (len, n) array).")
+           py::arg("scale_invariant") = py::none(), py::arg("normalization") = py::none(),
+           py::arg("progress") = py::none())
+      .def("diffuse", &Heat_diffusion::diffuse, py::arg("field"), py::arg("steps") = py::none(),
+           ("F^k = A_t^k F^0. steps: one k (returns an (n,) array) or a list of them (returns a (len, n) array);\n"
+            "None: k = " + std::to_string(D::number_of_steps) + " (anisotropic_heat_diffusion()'s default).")
+               .c_str())
       .def("operator_matrix", &Heat_diffusion::operator_matrix,
            "A_t as a scipy.sparse.csc_matrix in the input's vertex order: symmetric, every row and column\n"
            "summing to 1 (normalization 'balanced', the default), or every column (normalization 'columns').")
       .def("region_statistics", &Heat_diffusion::region_statistics,
            "Sizes of the heat regions: min_size, mean_size, max_size, collapsed_regions, capped_regions.")
       .def("normal_signature", &Heat_diffusion::normal_signature, "The Normal Signature of the mesh, (n,).")
-      .def("features", &Heat_diffusion::features, py::arg("field") = py::none(), py::arg("steps") = std::vector<int>{0, 10, 40},
-           py::kw_only(), py::arg("feature_threshold") = 0.8,
-           "Convex and concave features of the diffused field (default: the NS) at each k of steps: a list\n"
-           "of dicts {'steps', 'convex', 'concave'} with sorted vertex indices.")
-      .def("decompose", &Heat_diffusion::decompose, py::arg("field") = py::none(), py::arg("levels") = py::int_(3),
+      .def("features", &Heat_diffusion::features, py::arg("field") = py::none(), py::arg("steps") = py::none(),
+           py::kw_only(), py::arg("feature_threshold") = py::none(),
+           ("Convex and concave features of the diffused field (default: the NS) at each k of steps (default " +
+            feature_scales_text() + "): a list\nof dicts {'steps', 'convex', 'concave'} with sorted vertex indices; "
+            "feature_threshold: the paper's c (default " + number_text(D::feature_threshold) + ").")
+               .c_str())
+      .def("decompose", &Heat_diffusion::decompose, py::arg("field") = py::none(), py::arg("levels") = py::none(),
            py::kw_only(), py::arg("steps_per_level") = py::none(),
-           "Detail bands (levels, n) and residual (n,) of the field (default: the NS), eq. 24;\n"
-           "steps_per_level None: decompose_field()'s default.")
+           ("Detail bands (levels, n) and residual (n,) of the field (default: the NS), eq. 24; levels default " +
+            std::to_string(D::detail_levels) + ",\nsteps_per_level decompose_field()'s (" +
+            std::to_string(D::decomposition_steps_per_level) + ").")
+               .c_str())
       .def_property_readonly("number_of_vertices", &Heat_diffusion::number_of_vertices)
       .def_property_readonly("time", &Heat_diffusion::time)
       .def_property_readonly("kernel", &Heat_diffusion::kernel, "'local' or 'spectral'")
@@ -1133,43 +1272,84 @@ PYBIND11_MODULE(cgal_heat_diffusion, module)
   module.def("normal_controlled_coordinates", &normal_controlled_coordinates, py::arg("V"), py::arg("F"),
              "The Normal-Controlled Coordinates (n, 3), parallel to the vertex normals.");
   module.def("multiscale_features", &multiscale_features, py::arg("V"), py::arg("F"), py::arg("field") = py::none(),
-             py::arg("steps") = std::vector<int>{0, 10, 40}, py::kw_only(), py::arg("feature_threshold") = 0.8,
-             py::arg("sigma") = 0.1, py::arg("time") = 1.0, py::arg("kernel") = py::none(), py::arg("m") = py::none(),
-             py::arg("coarse") = py::none(), py::arg("scale_invariant") = false, py::arg("progress") = py::none(),
-             (std::string("Features of the diffused field (default: the NS), as HeatDiffusion.features.\n") +
-              diffusion_arguments_doc)
+             py::arg("steps") = py::none(), py::kw_only(), py::arg("feature_threshold") = py::none(),
+             py::arg("sigma") = py::none(), py::arg("time") = py::none(), py::arg("kernel") = py::none(),
+             py::arg("m") = py::none(), py::arg("coarse") = py::none(), py::arg("scale_invariant") = py::none(),
+             py::arg("progress") = py::none(),
+             ("Features of the diffused field (default: the NS), as HeatDiffusion.features.\n" + diffusion_doc)
                  .c_str());
   module.def("decompose", &decompose, py::arg("V"), py::arg("F"), py::arg("field") = py::none(),
-             py::arg("levels") = py::int_(3), py::kw_only(), py::arg("steps_per_level") = py::none(),
-             py::arg("sigma") = 0.1, py::arg("time") = 1.0, py::arg("kernel") = py::none(), py::arg("m") = py::none(),
-             py::arg("coarse") = py::none(), py::arg("scale_invariant") = false, py::arg("progress") = py::none(),
-             (std::string("Detail bands (levels, n) and residual (n,) of the field (default: the NS).\n") +
-              diffusion_arguments_doc)
+             py::arg("levels") = py::none(), py::kw_only(), py::arg("steps_per_level") = py::none(),
+             py::arg("sigma") = py::none(), py::arg("time") = py::none(), py::arg("kernel") = py::none(),
+             py::arg("m") = py::none(), py::arg("coarse") = py::none(), py::arg("scale_invariant") = py::none(),
+             py::arg("progress") = py::none(),
+             ("Detail bands (levels, n) and residual (n,) of the field (default: the NS), as\n"
+              "HeatDiffusion.decompose.\n" + diffusion_doc)
                  .c_str());
   module.def("synthesize", &synthesize, py::arg("bands"), py::arg("residual"), py::arg("weights"),
              "residual + sum_j weights[j] bands[j] (eq. 26).");
   module.def("filter_shape", &filter_shape, py::arg("V"), py::arg("F"), py::arg("weights"), py::kw_only(),
-             py::arg("steps_per_level") = py::none(), py::arg("anchor_weight") = py::none(), py::arg("sigma") = 0.1,
-             py::arg("time") = 1.0, py::arg("kernel") = py::none(), py::arg("m") = py::none(),
-             py::arg("coarse") = py::none(), py::arg("scale_invariant") = false, py::arg("progress") = py::none(),
-             (std::string("New vertex positions (n, 3): the NS bands reweighted, the shape reconstructed;\n"
-                         "steps_per_level, anchor_weight None: filter_shape()'s defaults.\n") +
-              diffusion_arguments_doc)
+             py::arg("steps_per_level") = py::none(), py::arg("anchor_weight") = py::none(),
+             py::arg("sigma") = py::none(), py::arg("time") = py::none(), py::arg("kernel") = py::none(),
+             py::arg("m") = py::none(), py::arg("coarse") = py::none(), py::arg("scale_invariant") = py::none(),
+             py::arg("progress") = py::none(),
+             ("New vertex positions (n, 3): the NS bands reweighted, the shape reconstructed; steps_per_level\n"
+              "(default " + std::to_string(D::shape_filter_steps_per_level) + ") and anchor_weight (default " +
+              number_text(D::shape_filter_anchor_weight) + ") are filter_shape()'s.\n" + diffusion_doc)
                  .c_str());
   module.def("heat_kernel_signature", &heat_kernel_signature, py::arg("V"), py::arg("F"), py::kw_only(),
-             py::arg("time") = 20.0, py::arg("sigma") = std::numeric_limits<double>::infinity(),
-             py::arg("m") = py::none(), py::arg("coarse") = py::none(), py::arg("scale_invariant") = false,
-             py::arg("progress") = py::none(),
-             "The heat kernel signature h_t(i, i) (n,) of the spectral kernel (sigma = inf: the classical HKS).");
-  module.def("denoise", &denoise, py::arg("V"), py::arg("F"), py::kw_only(), py::arg("method") = "normal_filtering",
+             py::arg("time") = py::none(), py::arg("sigma") = py::none(), py::arg("m") = py::none(),
+             py::arg("coarse") = py::none(), py::arg("scale_invariant") = py::none(), py::arg("progress") = py::none(),
+             ("The heat kernel signature h_t(i, i) (n,) of the spectral kernel; by default the classical HKS:\n"
+              "time " + number_text(D::heat_kernel_signature::time) + ", sigma " +
+              number_text(D::heat_kernel_signature::sigma) + " (the plain Laplacian).")
+                 .c_str());
+  module.def("denoise", &denoise, py::arg("V"), py::arg("F"), py::kw_only(), py::arg("method") = py::none(),
              py::arg("number_of_iterations") = py::none(), py::arg("number_of_steps") = py::none(),
-             py::arg("sigma") = 1.0, py::arg("time") = 1.0, py::arg("kernel") = py::none(), py::arg("m") = py::none(),
-             py::arg("coarse") = py::none(), py::arg("anchor_weight") = 0.7, py::arg("normal_sigma") = py::none(),
-             py::arg("displacement_limit") = 1.1, py::arg("progress") = py::none(),
-             "New vertex positions (n, 3) of the denoised mesh (denoise_mesh(); the defaults are its own).");
+             py::arg("sigma") = py::none(), py::arg("time") = py::none(), py::arg("kernel") = py::none(),
+             py::arg("m") = py::none(), py::arg("coarse") = py::none(), py::arg("anchor_weight") = py::none(),
+             py::arg("normal_sigma") = py::none(), py::arg("displacement_limit") = py::none(),
+             py::arg("progress") = py::none(),
+             ("New vertex positions (n, 3) of the denoised mesh (denoise_mesh()). Every keyword None is\n"
+              "denoise_mesh()'s own default: method 'normal_filtering' (or 'signature_diffusion'), at most " +
+              std::to_string(D::denoising::normal_filtering_iterations) + " iterations (" +
+              std::to_string(D::denoising::signature_diffusion_iterations) +
+              " for signature diffusion),\nthe noise level, the normal widths and the stop estimated from the mesh "
+              "(displacement_limit " + number_text(D::denoising::displacement_limit) + "); signature\ndiffusion: sigma " +
+              number_text(D::denoising::sigma) + ", time " + number_text(D::denoising::time) + ", anchor_weight " +
+              number_text(D::denoising::anchor_weight) + ".")
+                 .c_str());
   module.def("reconstruct", &reconstruct, py::arg("V"), py::arg("F"), py::arg("ns"), py::kw_only(),
-             py::arg("anchor_weight") = 1.0, py::arg("normals") = py::none(),
-             "New vertex positions (n, 3) whose NCC match the Normal Signature ns (eq. 23).");
+             py::arg("anchor_weight") = py::none(), py::arg("normals") = py::none(),
+             ("New vertex positions (n, 3) whose NCC match the Normal Signature ns (eq. 23); anchor_weight\n"
+              "default " + number_text(D::reconstruction_anchor_weight) + "; normals: (n, 3) array-like, None: the mesh's.")
+                 .c_str());
+  module.def("repair", &repair, py::arg("V"), py::arg("F"),
+             "(V2, F2, origin): the mesh (V, F) repaired with CGAL's repair functions, as the tool repairs its\n"
+             "input: duplicate points merged, degenerate and duplicate faces removed, faces reoriented to agree\n"
+             "with their neighbours, non-manifold vertices split, isolated vertices and faces of zero area\n"
+             "removed. origin[i] is the row of V that row i of V2 comes from (the first row at its position), so\n"
+             "that a result on V2 is given per row of V by result[inverse] or np.bincount(origin, ...). A mesh\n"
+             "that needs no repair comes back as it is (origin = arange(n)). The other functions do not repair:\n"
+             "they refuse such a mesh with a ValueError that names this function.");
+  // The package's refusals of what repair() repairs name it.
+  py::register_exception_translator([](std::exception_ptr p) {
+    try
+    {
+      if(p)
+        std::rethrow_exception(p);
+    }
+    catch(const std::invalid_argument& e)
+    {
+      const std::string message = e.what();
+      const bool repairable = message.rfind("CGAL::Heat_diffusion:", 0) == 0 &&
+                              (message.find("is non-manifold") != std::string::npos ||
+                               message.find("is isolated") != std::string::npos ||
+                               message.find("has zero area") != std::string::npos);
+      PyErr_SetString(PyExc_ValueError,
+                      (message + (repairable ? "; cgal_heat_diffusion.repair(V, F) repairs the mesh" : "")).c_str());
+    }
+  });
   module.def("loop_subdivision", &loop_subdivision, py::arg("V"), py::arg("F"), py::arg("iterations") = 1,
              "(V, F) of the mesh Loop-subdivided `iterations` times.");
   module.def("_compare_mesh_constructions", &compare_mesh_constructions, py::arg("V"), py::arg("F"),

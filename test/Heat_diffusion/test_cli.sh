@@ -156,7 +156,9 @@ PYTHON
   "$tool" denoise "$data/elephant.off" -o clean_denoised.off --json --quiet > clean_denoise.json &&
   python3 -c '
 import json; d = json.load(open("denoise.json")); c = json.load(open("clean_denoise.json"))
-assert d["vertices"] == 2775 and d["method"] == "normal_filtering" and d["max_iterations"] == 100, d
+assert d["vertices"] == 2775 and d["method"] == "normal_filtering" and d["max_iterations"] == 40, d
+assert d["given"] == [] and d["denoiser"]["stage"] == "curved" and d["denoiser"]["noise_level_in_mean_edge_lengths"] > 0, d
+assert c["denoiser"]["stage"] == "unchanged", c
 assert 0 < d["displacement_in_mean_edge_lengths"]["mean"] < 1, d
 assert c["displacement_in_mean_edge_lengths"]["max"] < 1e-9, c
 assert all(v >= 0 for v in d["timings_ms"].values()) and "denoise" in d["timings_ms"], d' &&

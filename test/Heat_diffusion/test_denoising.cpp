@@ -37,6 +37,7 @@
 #include <iostream>
 #include <iterator>
 #include <limits>
+#include <optional>
 #include <sstream>
 #include <string>
 #include <utility>
@@ -1040,10 +1041,52 @@ void test_parameters()
   CHECK(empty.number_of_vertices() == 0);
 }
 
+// What denoise_mesh() reports, and that its adaptive defaults are the same whether the
+// parameters are left out or given as empty std::optional (as the front ends give them).
+void test_report()
+{
+  namespace P = HD::parameters;
+  const Mesh clean = test_support::load<Mesh>("fandisk.off");
+  Mesh noisy = clean;
+  test_support::add_normal_noise(noisy, 0.3, 5);
+  Mesh plain = noisy, empty = noisy;
+  const HD::Denoising_report report = HD::denoise_mesh(plain);
+  const HD::Denoising_report empty_report = HD::denoise_mesh(
+      empty, P::normal_sigma(std::optional<double>())
+                 .displacement_limit(std::optional<double>())
+                 .number_of_steps(std::optional<std::size_t>())
+                 .denoising_method(std::optional<HD::Denoising_method>())
+                 .number_of_iterations(std::optional<unsigned>()));
+  bool same = true;
+  for(auto v : plain.vertices())
+    same = same && plain.point(v) == empty.point(v);
+  CHECK_MESSAGE(same, "empty optionals change denoise_mesh()'s result");
+  CHECK(report.method == HD::Denoising_method::normal_filtering);
+  // fandisk is piecewise flat: the crease-preserving filter runs on to its fixed point
+  CHECK(report.stage == HD::Denoising_stage::piecewise_flat);
+  // the estimate reads the noise of 0.3 mean edge length, about (its bias is measured in the manual)
+  CHECK_MESSAGE(report.noise_level > 0.2 && report.noise_level < 0.4, report.noise_level);
+  CHECK(report.iterations >= 1 && report.iterations <= HD::defaults::denoising::normal_filtering_iterations);
+  CHECK(empty_report.stage == report.stage && empty_report.noise_level == report.noise_level &&
+        empty_report.iterations == report.iterations);
+
+  // a clean mesh: what the estimate reads is the shape's own roughness, left as it is
+  Mesh unchanged = clean;
+  CHECK(HD::denoise_mesh(unchanged).stage == HD::Denoising_stage::unchanged);
+  // the user's width, and the paper's pipeline with the kernel that automatic selects
+  Mesh with_width = noisy;
+  CHECK(HD::denoise_mesh(with_width, P::normal_sigma(0.3)).stage == HD::Denoising_stage::user_normal_sigma);
+  Mesh signature = noisy;
+  const HD::Denoising_report paper = HD::denoise_mesh(signature, P::denoising_method(HD::Denoising_method::signature_diffusion));
+  CHECK(paper.stage == HD::Denoising_stage::signature_diffusion && paper.kernel_method == HD::Heat_kernel_method::local);
+  CHECK(paper.iterations == HD::defaults::denoising::signature_diffusion_iterations);
+}
+
 } // namespace
 
 void run()
 {
+  test_report();
   test_parameters();
   test_kernels_and_mesh_types();
   test_scale_invariance();

@@ -21,6 +21,7 @@
 #include <cmath>
 #include <limits>
 #include <map>
+#include <optional>
 #include <utility>
 #include <vector>
 
@@ -602,10 +603,46 @@ void check_few_eigenpairs_in_a_cluster()
                "Remedies: a larger sigma, more eigenpairs than the patches, or the local heat kernel");
 }
 
+// A parameter given as an empty std::optional is the parameter left out (the tool and
+// the Python module pass every option so, given or not), one that holds a value is that
+// value; Heat_kernel_method::automatic reads which were given at run time.
+void check_optional_parameters()
+{
+  namespace P = HD::parameters;
+  const Mesh fandisk = test_support::load<Mesh>("fandisk.off");
+  const std::optional<double> none;
+  const Diffusion plain(fandisk);
+  const Diffusion empty(fandisk, P::sigma(none).time(none).kernel_method(std::optional<HD::Heat_kernel_method>())
+                                     .number_of_eigenpairs(std::optional<std::size_t>())
+                                     .coarse_vertex_count(std::optional<long long>())
+                                     .operator_normalization(std::optional<HD::Operator_normalization>()));
+  CHECK(empty.kernel_method() == HD::Heat_kernel_method::local);
+  CHECK(empty.sigma() == HD::defaults::sigma && empty.time() == HD::defaults::time);
+  CHECK(empty.operator_normalization() == HD::Operator_normalization::balanced);
+  CHECK_MESSAGE((empty.operator_matrix() - plain.operator_matrix()).norm() == 0., "empty optionals change A_t");
+
+  const Diffusion given(fandisk, P::sigma(std::optional<double>(0.5)).time(std::optional<double>(2.)));
+  const Diffusion values(fandisk, P::sigma(0.5).time(2.));
+  CHECK(given.sigma() == 0.5 && given.time() == 2.);
+  CHECK_MESSAGE((given.operator_matrix() - values.operator_matrix()).norm() == 0., "an optional's value is not the value");
+
+  // the automatic kernel: an eigenpair count in an optional asks for eigenpairs, an empty one does not
+  const Diffusion spectral(fandisk, P::number_of_eigenpairs(std::optional<std::size_t>(40)));
+  CHECK(spectral.kernel_method() == HD::Heat_kernel_method::spectral);
+  CHECK(spectral.heat_kernel().number_of_eigenpairs() == 40);
+  const Kernel automatic_coarse(fandisk, P::coarse_vertex_count(std::optional<long long>()).number_of_eigenpairs(30));
+  CHECK(automatic_coarse.coarse_vertex_count() == 0);  // fandisk is below the automatic threshold
+  // the checks of the values apply to the value in the optional
+  CHECK_THROWS(Diffusion(fandisk, P::time(std::optional<double>(-1.))), std::invalid_argument, "time");
+  CHECK_THROWS(Kernel(fandisk, P::number_of_eigenpairs(std::optional<long long>(-3))), std::invalid_argument,
+               "number_of_eigenpairs must be positive");
+}
+
 void run()
 {
   try
   {
+    check_optional_parameters();
     check_real_meshes();
     check_operator_normalizations();
     check_convergence_to_the_mean();

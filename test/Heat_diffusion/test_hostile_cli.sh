@@ -46,7 +46,15 @@ accepted=(
   huge_coordinates.off
   tiny_coordinates.off
 )
-# Files every subcommand rejects (exit 1), and what the message says after the file name.
+# Files that are no mesh the package processes, which the tool repairs by default
+# (CGAL's repair functions): every subcommand accepts them and says what it repaired.
+# With --no-repair they are rejected as listed below.
+repaired=(
+  zero_area.off isolated_vertex.off nonmanifold_edge.off nonmanifold_vertex.off
+  polygon_with_repeated_point.off broken_by_triangulation.off
+)
+# Files every subcommand rejects with --no-repair (exit 1), and what the message says
+# after the file name; all but the `repaired` ones are rejected without it too.
 declare -A rejected=(
   [zero_area.off]='face 0 \(vertices 0, 1, 2\) has zero area'
   [isolated_vertex.off]='vertex 4 is isolated'
@@ -146,14 +154,18 @@ run() {
   out=$(cd "$dir" && timeout 120 "$@" 2>&1); status=$?
 }
 
-# Accepted meshes: exit 0, a finite JSON summary, finite PLY outputs.
-for mesh in "${accepted[@]}"; do
+# Accepted meshes: exit 0, a finite JSON summary, finite PLY outputs; the repaired ones
+# with the repair in the summary.
+for mesh in "${accepted[@]}" "${repaired[@]}"; do
   for c in "${available[@]}"; do
     dir="$work/ok_${c}_${mesh%.off}"
     # shellcheck disable=SC2086
     run "$dir" "$tool" "$c" "$corpus/$mesh" ${commands[$c]} --json --quiet
     if [ "$status" -ne 0 ]; then fail "$c $mesh -> exit $status: $out"; continue; fi
     printf '%s\n' "$out" > "$dir.json"
+    if [[ " ${repaired[*]} " == *" $mesh "* ]] && ! grep -q '"repair": {' "$dir.json"; then
+      fail "$c $mesh: no repair in the summary"
+    fi
     if why=$(check_outputs "$dir.json" "$dir"/*.ply 2>&1); then pass; else check_failed "$c $mesh" "$why"; fi
     if ls "$dir" | grep -q partial; then fail "$c $mesh left a temporary file"; else pass; fi
     if ls "$dir"/*.off >/dev/null 2>&1 && grep -qiE 'nan|inf' "$dir"/*.off; then fail "$c $mesh wrote a non-finite OFF"; else pass; fi
@@ -166,16 +178,21 @@ rejected[zero_bytes.off]='no OFF header'
 mkdir -p "$work/a_directory.off"
 rejected[a_directory.off]='no such file'
 rejected[missing.off]='no such file'
-for mesh in "${!rejected[@]}"; do
-  path="$corpus/$mesh"
-  [ -e "$path" ] || path="$work/$mesh"
-  for c in "${available[@]}"; do
-    dir="$work/bad_${c}_${mesh%.off}"
-    # shellcheck disable=SC2086
-    run "$dir" "$tool" "$c" "$path" ${commands[$c]} --quiet
-    if [ "$status" -ne 1 ]; then fail "$c $mesh -> exit $status, expected 1: $out"; continue; fi
-    if grep -qE -- "$mesh: .*(${rejected[$mesh]})" <<<"$out"; then pass; else check_failed "$c $mesh" "message lacks '${rejected[$mesh]}': $out"; fi
-    if [ -z "$(ls -A "$dir")" ]; then pass; else fail "$c $mesh left $(ls "$dir")"; fi
+for mode in --no-repair repair; do
+  for mesh in "${!rejected[@]}"; do
+    [ "$mode" = repair ] && [[ " ${repaired[*]} " == *" $mesh "* ]] && continue
+    path="$corpus/$mesh"
+    [ -e "$path" ] || path="$work/$mesh"
+    for c in "${available[@]}"; do
+      dir="$work/bad_${c}_${mesh%.off}"
+      # shellcheck disable=SC2086
+      run "$dir" "$tool" "$c" "$path" ${commands[$c]} --quiet $([ "$mode" = repair ] || echo --no-repair)
+      if [ "$status" -ne 1 ]; then fail "$c $mesh ($mode) -> exit $status, expected 1: $out"; continue; fi
+      if grep -qE -- "$mesh: .*(${rejected[$mesh]})" <<<"$out"; then pass; else check_failed "$c $mesh" "($mode) message lacks '${rejected[$mesh]}': $out"; fi
+      # one message per failure: nothing from CGAL's readers before the tool's
+      if [ "$(wc -l <<<"$out")" -eq 1 ]; then pass; else fail "$c $mesh ($mode): more than one line: $out"; fi
+      if [ -z "$(ls -A "$dir")" ]; then pass; else fail "$c $mesh left $(ls "$dir")"; fi
+    done
   done
 done
 

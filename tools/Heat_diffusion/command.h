@@ -15,9 +15,11 @@
 #include "cli_progress.h"
 #include "diffusion_options.h"
 #include "mesh_input.h"
+#include "mesh_repair.h"
 
 #include <functional>
 #include <iostream>
+#include <map>
 #include <optional>
 #include <string>
 #include <utility>
@@ -26,6 +28,36 @@
 namespace heat_diffusion_cli {
 
 namespace HD = CGAL::Heat_diffusion;
+
+// The JSON account of a repair: its counts, the vertices of the result, and the input
+// vertices that became several ("copies": {"input vertex": [its vertices in the result]}).
+inline Json_object repair_json(const Repair_report& r, std::size_t vertices)
+{
+  std::map<std::size_t, std::vector<std::size_t> > copies;
+  for(std::size_t v = 0; v < r.origin.size(); ++v)
+    copies[r.origin[v]].push_back(v);
+  std::string list;
+  for(const auto& entry : copies)
+    if(entry.second.size() > 1)
+    {
+      list += (list.empty() ? "\"" : ", \"") + std::to_string(entry.first) + "\": [";
+      for(std::size_t i = 0; i < entry.second.size(); ++i)
+        list += (i ? ", " : "") + std::to_string(entry.second[i]);
+      list += "]";
+    }
+  Json_object o;
+  o.integer("points_merged", (long long)r.points_merged)
+      .integer("polygons_removed", (long long)r.polygons_removed)
+      .integer("faces_reoriented", (long long)r.faces_reoriented)
+      .integer("vertices_split", (long long)r.vertices_split)
+      .integer("isolated_vertices_removed", (long long)r.isolated_vertices_removed)
+      .integer("degenerate_faces_removed", (long long)r.degenerate_faces_removed)
+      .integer("polygons_triangulated", (long long)r.polygons_triangulated)
+      .integer("vertices", (long long)vertices)
+      .boolean("vertices_as_in_the_file", r.keeps_vertices())
+      .raw("copies", "{" + list + "}");
+  return o;
+}
 
 // One run of a subcommand: its parsed command line and what it reports.
 struct Run
@@ -51,14 +83,39 @@ struct Run
       check_output_path(output, inputs);
   }
 
-  // Reads the input mesh (stage "read"); returns the number of faces triangulated.
+  // Reads the input mesh (stage "read"), repaired unless --no-repair is given; returns
+  // the number of faces triangulated. A repair is reported: a line on stderr, "repair"
+  // in the JSON summary, and, where it renumbered the vertices, their input vertex in the
+  // PLY outputs (with_origin()).
   std::size_t read_mesh(Mesh& mesh)
   {
     timer.start();
-    const std::size_t triangulated = read_triangle_mesh(input, mesh);
+    const std::size_t triangulated = read_triangle_mesh(input, mesh, args.flag("--no-repair") ? nullptr : &repair);
     timer.stop("read");
+    if(repair.changed())
+    {
+      if(!quiet)
+        std::cerr << input << ": repaired: " << repair_summary(repair)
+                  << (repair.keeps_vertices() ? ""
+                                              : "; the vertices are renumbered: the PLY outputs' property 'origin' "
+                                                "and --json's \"repair\" map them to the file's")
+                  << "\n";
+      summary.object("repair", repair_json(repair, mesh.number_of_vertices()));
+    }
     return triangulated;
   }
+
+  // The per-vertex fields of a PLY output, with "origin", the file's vertex of each
+  // vertex, where the repair renumbered them.
+  std::vector<std::pair<std::string, std::vector<double> > >
+  with_origin(std::vector<std::pair<std::string, std::vector<double> > > fields) const
+  {
+    if(repair.changed() && !repair.keeps_vertices())
+      fields.emplace_back("origin", std::vector<double>(repair.origin.begin(), repair.origin.end()));
+    return fields;
+  }
+
+  Repair_report repair;  // what the repair of the input changed (nothing, if it needed none)
 };
 
 // A subcommand: what it states of its own; run_command() does the rest.
@@ -85,7 +142,7 @@ inline int run_command(const Command& command, int argc, char** argv)
   Arguments args = [&] {
     if(command.diffusion)
       return diffusion_arguments(*command.diffusion, flags, valued);
-    for(const char* f : {"--json", "--quiet", "-h", "--help"})
+    for(const char* f : {"--json", "--quiet", "--no-repair", "-h", "--help"})
       flags.push_back(f);
     return Arguments(flags, valued);
   }();

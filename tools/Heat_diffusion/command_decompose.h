@@ -24,32 +24,28 @@ namespace heat_diffusion_cli {
 
 // A decomposition spec: -k is the number of steps of one level, also spelled
 // --steps-per-level.
-inline Diffusion_spec level_spec(const std::string& steps_default = "5")
+inline Diffusion_spec level_spec(std::size_t library_default = HD::defaults::decomposition_steps_per_level)
 {
   Diffusion_spec spec;
   spec.steps = Diffusion_spec::single_step;
+  const std::string steps_default = std::to_string(library_default);
   spec.steps_default = steps_default;
   spec.steps_help = "diffusion steps of one level, 1 to 1000000 (default " + steps_default +
                     "); --steps-per-level S is the same";
   return spec;
 }
 
-// The steps per level: -k or --steps-per-level (not both), from 1 to 1000000.
-struct Steps_per_level
-{
-  std::size_t value;  // as given, or the default the help states
-  bool given;         // false: the package's default applies
-};
-
-inline Steps_per_level parse_steps_per_level(const Arguments& args, const Diffusion_options& o)
+// The steps per level: -k or --steps-per-level (not both), from 1 to 1000000; empty if
+// neither is given (the library's default).
+inline std::optional<std::size_t> parse_steps_per_level(const Arguments& args, const Diffusion_options& o)
 {
   if(args.has("-k") && args.has("--steps-per-level"))
     throw Usage_error("give the steps per level once, with -k or --steps-per-level");
   if(args.has("--steps-per-level"))
-    return {parse_count("--steps-per-level", args.value("--steps-per-level", ""), 1, maximum_steps), true};
-  if(o.steps.front() == 0)
+    return parse_count("--steps-per-level", args.value("--steps-per-level", ""), 1, maximum_steps);
+  if(o.step_count && *o.step_count == 0)
     throw Usage_error("-k must be a whole number from 1 to 1000000 here (the steps of one level), not '0'");
-  return {o.steps.front(), args.has("-k")};
+  return o.step_count;
 }
 
 inline Diffusion_spec decompose_spec()
@@ -72,7 +68,8 @@ inline std::string decompose_help()
          "Every band sums to zero (eq. 25), up to rounding.\n"
          "\n"
          "Options:\n" +
-         help_option("--levels L", "number of detail bands, 1 to 1000 (default 3)") +
+         help_option("--levels L", "number of detail bands, 1 to 1000 (default " +
+                                       std::to_string(HD::defaults::detail_levels) + ")") +
          diffusion_options_help(decompose_spec()) +
          help_option("-o PREFIX", "outputs PREFIX_band<j>.ply for j = 1..L and PREFIX_residual.ply (default: MESH's "
                                   "name with _decomposed, in the current folder): binary PLYs with the vertex "
@@ -94,8 +91,9 @@ inline Command decompose_command()
   command.help = decompose_help;
   command.run = [](Run& r) {
     const Diffusion_options& o = r.diffusion;
-    const std::size_t levels = parse_count("--levels", r.args.value("--levels", "3"), 1, 1000);
-    const Steps_per_level steps_per_level = parse_steps_per_level(r.args, o);
+    const std::size_t levels =
+        parse_count("--levels", r.args.value("--levels", std::to_string(HD::defaults::detail_levels)), 1, 1000);
+    const std::optional<std::size_t> steps_per_level = parse_steps_per_level(r.args, o);
     const std::string prefix = r.args.value("-o", default_output(r.input, "_decomposed"));
     std::vector<std::string> outputs;
     for(std::size_t j = 1; j <= levels; ++j)
@@ -117,12 +115,9 @@ inline Command decompose_command()
     for(std::size_t j = 1; j <= levels; ++j)
       bands.push_back(mesh.add_property_map<Mesh::Vertex_index, double>("v:band" + std::to_string(j), 0.).first);
     Field_map residual = mesh.add_property_map<Mesh::Vertex_index, double>("v:residual", 0.).first;
-    for_input(r.input, [&] {
-      if(steps_per_level.given)
-        HD::decompose_field(diffusion, field, bands, residual, HD::parameters::steps_per_level(steps_per_level.value));
-      else
-        HD::decompose_field(diffusion, field, bands, residual);
-    });
+    for_input(r.input,
+              [&] { HD::decompose_field(diffusion, field, bands, residual, HD::parameters::steps_per_level(steps_per_level)); });
+    const std::size_t steps_used = steps_per_level.value_or(HD::defaults::decomposition_steps_per_level);
     r.timer.stop("decomposition");
 
     // The PLYs get copies of the values: the mesh they write must not carry the maps.
@@ -137,7 +132,7 @@ inline Command decompose_command()
     mesh.remove_property_map(field);
     Output_files files;
     for(std::size_t j = 0; j < values.size(); ++j)
-      write_fields_ply(files, outputs[j], mesh, {{"field", values[j]}});
+      write_fields_ply(files, outputs[j], mesh, r.with_origin({{"field", values[j]}}));
     files.commit();
     r.timer.stop("write");
 
@@ -172,12 +167,13 @@ inline Command decompose_command()
     note_automatic_coarse(o, mesh.number_of_vertices(), setup.kernel ? setup.kernel->coarse_vertex_count() : 0);
     warn_about_collapsed_regions(diffusion, o);
     if(!r.quiet)
-      std::cerr << levels << " bands of " << steps_per_level.value << " steps; largest |band sum| / sum |S| = "
+      std::cerr << levels << " bands of " << steps_used << " steps; largest |band sum| / sum |S| = "
                 << worst_relative_sum << "\nwritten to " << prefix << "_band*.ply and " << outputs.back() << "\n";
     r.summary.string("field", o.field).object("outputs", names).integer("vertices", (long long)mesh.number_of_vertices());
-    add_diffusion_json(r.summary, o, mesh.number_of_vertices(), setup.kernel.get());
+    add_diffusion_json(r.summary, o, mesh.number_of_vertices(), setup.kernel.get(), &diffusion,
+                       steps_per_level ? std::vector<std::string>{"steps_per_level"} : std::vector<std::string>{});
     r.summary.integer("levels", (long long)levels)
-        .integer("steps_per_level", (long long)steps_per_level.value)
+        .integer("steps_per_level", (long long)steps_used)
         .object("heat_regions", heat_region_json(diffusion.region_statistics()))
         .number("total_heat", total_heat)
         .number("residual_heat", residual_heat)

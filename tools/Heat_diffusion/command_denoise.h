@@ -18,6 +18,7 @@
 
 #include <functional>
 #include <iostream>
+#include <optional>
 #include <string>
 #include <vector>
 
@@ -25,20 +26,40 @@ namespace heat_diffusion_cli {
 
 inline Diffusion_spec denoise_spec()
 {
+  namespace D = HD::defaults::denoising;
   Diffusion_spec spec;
-  spec.sigma_default = "1";
+  spec.sigma_default = D::sigma;
   spec.sigma_note = "signature diffusion only";
+  spec.time_default = D::time;
   spec.time_note = "signature diffusion only";
   spec.steps = Diffusion_spec::single_step;
-  spec.steps_default = "2";  // normal filtering; run_denoise() sets 1 for signature diffusion
-  spec.steps_help = "steps per iteration, 0 to 1000000: normal diffusion steps (normal filtering, default 2) "
-                    "or diffusion steps of the signature (signature diffusion, default 1)";
+  spec.steps_default = std::to_string(D::number_of_steps);
+  spec.steps_help = "steps per iteration, 0 to 1000000: normal diffusion steps (normal filtering) or diffusion "
+                    "steps of the signature (signature diffusion); default " + spec.steps_default;
   spec.scale_invariant = false;
   return spec;
 }
 
+// The name of a stage of denoise_mesh(), for the JSON summary.
+inline std::string stage_name(HD::Denoising_stage stage)
+{
+  switch(stage)
+  {
+  case HD::Denoising_stage::unchanged: return "unchanged";
+  case HD::Denoising_stage::user_normal_sigma: return "user_normal_sigma";
+  case HD::Denoising_stage::piecewise_flat: return "piecewise_flat";
+  case HD::Denoising_stage::curved: return "curved";
+  case HD::Denoising_stage::needle_copy: return "needle_copy";
+  case HD::Denoising_stage::needle_fit: return "needle_fit";
+  case HD::Denoising_stage::cotangent_flow: return "cotangent_flow";
+  case HD::Denoising_stage::signature_diffusion: return "signature_diffusion";
+  }
+  return "unknown";
+}
+
 inline std::string denoise_help()
 {
+  namespace D = HD::defaults::denoising;
   return "Usage: heat_diffusion denoise NOISY [-o OUT] [--method normal_filtering|signature_diffusion]\n"
          "                              [--iterations N] [-k K] [--normal-sigma S] [--displacement-limit D]\n"
          "                              [--sigma S] [--time T] [--kernel K] [--normalization N] [-m M]\n"
@@ -60,27 +81,33 @@ inline std::string denoise_help()
          "\n"
          "Options:\n" +
          help_option("--method M", "normal_filtering (default) or signature_diffusion") +
-         help_option("--iterations N", "at most N iterations, each on the previous result, 0 to 10000 (default 100 "
-                                       "for normal filtering, where the displacement limit usually stops it "
-                                       "earlier; 2 for signature diffusion)") +
+         help_option("--iterations N", "at most N iterations, each on the previous result, 0 to 10000 (default " +
+                                           std::to_string(D::normal_filtering_iterations) +
+                                           " for normal filtering, where the displacement limit usually stops it "
+                                           "earlier; " + std::to_string(D::signature_diffusion_iterations) +
+                                           " for signature diffusion)") +
          help_option("--normal-sigma S", "normal filtering: one width of the normal weights exp(-|n_f-n_g|^2/2S^2) "
                                          "for every face and iteration, until the displacement limit (default: "
                                          "a width per face from 0.2 to 0.45, then none on curved surfaces)") +
          help_option("--displacement-limit D", "normal filtering: stop when the RMS vertex displacement reaches D "
-                                               "times the estimated noise level (default 1.1)") +
+                                               "times the estimated noise level (default " +
+                                                   format_number(D::displacement_limit) + ")") +
          diffusion_options_help(denoise_spec()) +
          help_option("--anchor-weight W", "signature diffusion: weight that holds vertices at their current "
-                                          "positions (default 0.7)") +
+                                          "positions (default " + format_number(D::anchor_weight) + ")") +
          help_option("-o OUT", "the denoised mesh, .off, .obj, .ply or .stl (default: NOISY's name with "
                                "_denoised.off, in the current folder); never the input") +
-         help_option("--json", "print a JSON summary on stdout: the parameters, the mean and largest vertex "
-                               "displacement (in mean edge lengths) and the time of each stage in milliseconds") +
+         help_option("--json", "print a JSON summary on stdout: the parameters given, what the denoiser chose "
+                               "(the noise level it estimated, in mean edge lengths, its iterations, the stage "
+                               "whose result it returned, the kernel of signature diffusion), the mean and "
+                               "largest vertex displacement (in mean edge lengths) and the time of each stage in "
+                               "milliseconds") +
          common_options_help();
 }
 
 // --method, checked; the options of the other method would be silently ignored: they
-// are refused instead. The default of -k depends on the method.
-inline void adapt_denoise_spec(const Arguments& args, Diffusion_spec& spec)
+// are refused instead.
+inline void adapt_denoise_spec(const Arguments& args, Diffusion_spec&)
 {
   const std::string method_name = args.value("--method", "normal_filtering");
   if(method_name != "normal_filtering" && method_name != "signature_diffusion")
@@ -92,7 +119,6 @@ inline void adapt_denoise_spec(const Arguments& args, Diffusion_spec& spec)
     if(args.has(option))
       throw Usage_error(std::string(option) + " applies to --method " +
                         (filtering ? "signature_diffusion" : "normal_filtering") + " only");
-  spec.steps_default = filtering ? "2" : "1";
 }
 
 inline Command denoise_command()
@@ -107,19 +133,33 @@ inline Command denoise_command()
   command.help = denoise_help;
   command.run = [](Run& r) {
     const Diffusion_options& o = r.diffusion;
-    const std::string method_name = r.args.value("--method", "normal_filtering");
-    const bool filtering = method_name == "normal_filtering";
-    const HD::Denoising_method method =
-        filtering ? HD::Denoising_method::normal_filtering : HD::Denoising_method::signature_diffusion;
-    const std::size_t iterations =
-        parse_count("--iterations", r.args.value("--iterations", filtering ? "100" : "2"), 0, 10000);
-    const std::size_t k = o.steps.front();
-    const double anchor_weight = parse_number("--anchor-weight", r.args.value("--anchor-weight", "0.7"), 0., true);
-    const double displacement_limit =
-        parse_number("--displacement-limit", r.args.value("--displacement-limit", "1.1"), 0., true);
-    const bool automatic_normal_sigma = !r.args.has("--normal-sigma");
-    const double normal_sigma =
-        automatic_normal_sigma ? 0. : parse_number("--normal-sigma", r.args.value("--normal-sigma", ""), 0., true);
+    // Every option as given, or empty: denoise_mesh() chooses the rest itself. `given`:
+    // the named parameters given, beyond the diffusion's.
+    std::vector<std::string> given;
+    auto optional_number = [&](const char* option, const char* parameter) {
+      if(!r.args.has(option))
+        return std::optional<double>();
+      given.push_back(parameter);
+      return std::optional<double>(parse_number(option, r.args.value(option, ""), 0., true));
+    };
+    std::optional<HD::Denoising_method> method;
+    if(r.args.has("--method"))
+    {
+      given.push_back("denoising_method");
+      method = r.args.value("--method", "") == "normal_filtering" ? HD::Denoising_method::normal_filtering
+                                                                  : HD::Denoising_method::signature_diffusion;
+    }
+    std::optional<unsigned> iterations;
+    if(r.args.has("--iterations"))
+    {
+      given.push_back("number_of_iterations");
+      iterations = unsigned(parse_count("--iterations", r.args.value("--iterations", ""), 0, 10000));
+    }
+    if(o.step_count)
+      given.push_back("number_of_steps");
+    const std::optional<double> anchor_weight = optional_number("--anchor-weight", "anchor_weight");
+    const std::optional<double> displacement_limit = optional_number("--displacement-limit", "displacement_limit");
+    const std::optional<double> normal_sigma = optional_number("--normal-sigma", "normal_sigma");
     const std::string output = r.args.value("-o", default_output(r.input, "_denoised.off"));
     mesh_format(output);
     r.check_outputs({output});
@@ -132,20 +172,21 @@ inline Command denoise_command()
     // result (its normal filtering bounds the total displacement by the noise level of
     // the input). The progress bar follows its progress_callback, where it reports one.
     Progress_bar progress("denoising", !r.quiet);
-    for_input(r.input, [&] {
-      const auto np = HD::parameters::combine(
-          HD::parameters::denoising_method(method), CGAL::parameters::number_of_iterations(unsigned(iterations)),
-          HD::parameters::number_of_steps(k), HD::parameters::displacement_limit(displacement_limit),
-          HD::parameters::sigma(o.sigma), HD::parameters::time(o.time), HD::parameters::kernel_method(o.method),
-          HD::parameters::operator_normalization(o.normalization),
-          HD::parameters::number_of_eigenpairs(o.eigenpairs), HD::parameters::coarse_vertex_count(o.coarse),
-          HD::parameters::anchor_weight(anchor_weight),
-          HD::parameters::progress_callback(std::function<bool(double)>(std::ref(progress))));
-      if(automatic_normal_sigma)  // the default depends on the noise: left to denoise_mesh()
-        HD::denoise_mesh(mesh, np);
-      else
-        HD::denoise_mesh(mesh, HD::parameters::combine(np, HD::parameters::normal_sigma(normal_sigma)));
+    const HD::Denoising_report report = for_input(r.input, [&] {
+      return HD::denoise_mesh(
+          mesh, HD::parameters::combine(
+                    HD::parameters::denoising_method(method), CGAL::parameters::number_of_iterations(iterations),
+                    HD::parameters::number_of_steps(o.step_count), HD::parameters::displacement_limit(displacement_limit),
+                    HD::parameters::normal_sigma(normal_sigma), HD::parameters::sigma(o.sigma),
+                    HD::parameters::time(o.time), HD::parameters::kernel_method(o.kernel),
+                    HD::parameters::operator_normalization(o.normalization),
+                    HD::parameters::number_of_eigenpairs(o.eigenpairs), HD::parameters::coarse_vertex_count(o.coarse),
+                    HD::parameters::anchor_weight(anchor_weight),
+                    HD::parameters::progress_callback(std::function<bool(double)>(std::ref(progress)))));
     });
+    namespace D = HD::defaults::denoising;
+    const bool filtering = report.method == HD::Denoising_method::normal_filtering;
+    const std::string method_name = filtering ? "normal_filtering" : "signature_diffusion";
     progress.finish();
     r.timer.stop("denoise");
 
@@ -183,19 +224,32 @@ inline Command denoise_command()
         .integer("faces", (long long)mesh.number_of_faces())
         .integer("triangulated_faces", (long long)triangulated)
         .string("method", method_name)
-        .integer("max_iterations", (long long)iterations);
+        .integer("max_iterations",
+                 (long long)iterations.value_or(filtering ? D::normal_filtering_iterations
+                                                          : D::signature_diffusion_iterations))
+        .integer("steps", (long long)o.step_count.value_or(D::number_of_steps));
     if(filtering)
     {
-      r.summary.integer("steps", (long long)k).number("displacement_limit", displacement_limit);
-      if(!automatic_normal_sigma)
-        r.summary.number("normal_sigma", normal_sigma);
+      std::vector<std::string> all_given = o.given();
+      all_given.insert(all_given.end(), given.begin(), given.end());
+      r.summary.raw("given", json_string_list(all_given))
+          .number("displacement_limit", displacement_limit.value_or(D::displacement_limit));
+      if(normal_sigma)
+        r.summary.number("normal_sigma", *normal_sigma);
     }
     else
     {
-      add_diffusion_json(r.summary, o, mesh.number_of_vertices(), nullptr);
-      r.summary.integer("steps", (long long)k).number("anchor_weight", anchor_weight);
+      add_diffusion_json(r.summary, o, mesh.number_of_vertices(), nullptr, nullptr, given, D::sigma, D::time);
+      r.summary.number("anchor_weight", anchor_weight.value_or(D::anchor_weight));
     }
-    r.summary.object("displacement_in_mean_edge_lengths", displacement);
+    // What denoise_mesh() chose and did.
+    Json_object chosen;
+    chosen.number("noise_level_in_mean_edge_lengths", report.noise_level)
+        .integer("iterations", (long long)report.iterations)
+        .string("stage", stage_name(report.stage));
+    if(!filtering)
+      chosen.string("kernel", report.kernel_method == HD::Heat_kernel_method::local ? "local" : "spectral");
+    r.summary.object("denoiser", chosen).object("displacement_in_mean_edge_lengths", displacement);
   };
   return command;
 }

@@ -24,7 +24,7 @@ namespace heat_diffusion_cli {
 inline Diffusion_spec diffuse_spec()
 {
   Diffusion_spec spec;
-  spec.steps_help = "the steps k to write, 0 to 1000000 (default 0,10,40)";
+  spec.steps_help = "the steps k to write, 0 to 1000000 (default " + spec.steps_default + ")";
   spec.field = true;
   return spec;
 }
@@ -78,9 +78,9 @@ inline std::vector<double> global_total_heat(const Mesh& mesh, const Diffusion& 
     g0[Eigen::Index(isotropic->vertex_index(v))] = f0[Eigen::Index(diffusion.vertex_index(v))];
   std::vector<double> heat;
   for(std::size_t k : o.steps)
-    heat.push_back(for_input(input, [&] { return isotropic->global_heat_smoothing(g0, double(k) * o.time).sum(); }));
+    heat.push_back(for_input(input, [&] { return isotropic->global_heat_smoothing(g0, double(k) * diffusion.time()).sum(); }));
   Json_object coarse;
-  coarse.integer("vertex_count", (long long)isotropic->coarse_vertex_count()).boolean("automatic", o.coarse < 0);
+  coarse.integer("vertex_count", (long long)isotropic->coarse_vertex_count()).boolean("automatic", !o.coarse);
   baseline.string("method", "global spectral heat smoothing, isotropic")
       .number("sigma", isotropic->sigma())
       .integer("eigenpairs", (long long)isotropic->number_of_eigenpairs())
@@ -124,7 +124,8 @@ inline Command diffuse_command()
     Json_object heat, global_heat, names, minimum, maximum;
     for(std::size_t s = 0; s < o.steps.size(); ++s)
     {
-      write_fields_ply(files, outputs[s], mesh, {{"field", in_mesh_order(fields[s], mesh, diffusion)}}, half_range);
+      write_fields_ply(files, outputs[s], mesh, r.with_origin({{"field", in_mesh_order(fields[s], mesh, diffusion)}}),
+                       half_range);
       heat.number(std::to_string(o.steps[s]), fields[s].sum());
       minimum.number(std::to_string(o.steps[s]), fields[s].minCoeff());
       maximum.number(std::to_string(o.steps[s]), fields[s].maxCoeff());
@@ -150,7 +151,7 @@ inline Command diffuse_command()
         .integer("vertices", (long long)mesh.number_of_vertices())
         .integer("faces", (long long)mesh.number_of_faces())
         .integer("triangulated_faces", (long long)triangulated);
-    add_diffusion_json(r.summary, o, mesh.number_of_vertices(), setup.kernel.get());
+    add_diffusion_json(r.summary, o, mesh.number_of_vertices(), setup.kernel.get(), &diffusion);
     if(setup.kernel)
     {
       const Eigen::VectorXd& lambda = setup.kernel->eigenvalues();

@@ -20,6 +20,7 @@
 
 #include <CGAL/Polygon_mesh_processing/bbox.h>
 
+#include <array>
 #include <cmath>
 #include <iomanip>
 #include <iostream>
@@ -65,8 +66,17 @@ inline double normal_signature_variance(const Mesh& mesh)
   return squares / n - (sum / n) * (sum / n);
 }
 
-// -k as filter_shape() takes it; the help states its default of 2 steps per level.
-inline Diffusion_spec enhance_spec() { return level_spec("2"); }
+// The weights "1,3,3" of a list of them.
+inline std::string weight_list_text(const std::array<double, 3>& weights)
+{
+  std::string text;
+  for(double w : weights)
+    text += (text.empty() ? "" : ",") + format_number(w);
+  return text;
+}
+
+// -k as filter_shape() takes it; the help states its default steps per level.
+inline Diffusion_spec enhance_spec() { return level_spec(HD::defaults::shape_filter_steps_per_level); }
 
 inline std::string enhance_help()
 {
@@ -78,13 +88,15 @@ inline std::string enhance_help()
          "bands D^1..D^L (finest first) and a residual S^L, as 'decompose' does; the signature\n"
          "w_1 D^1 + ... + w_L D^L + S^L is rebuilt with the given weights, and the vertices are\n"
          "moved to match it (least-squares reconstruction, eq. 23). The paper's enhancement filter\n"
-         "is 1,3,3 (the default), its smoothing filter 0,0,1; weights all 1 return the input.\n"
+         "is 1,3,3, its smoothing filter 0,0,1; weights all 1 return the input.\n"
          "\n"
          "Options:\n" +
-         help_option("--weights W,...", "one weight per band, finest first; their number is L (default 1,3,3)") +
+         help_option("--weights W,...", "one weight per band, finest first; their number is L (default " +
+                                            weight_list_text(HD::defaults::enhancement_weights) + ")") +
          diffusion_options_help(enhance_spec()) +
-         help_option("--anchor-weight A", "weight of the positional anchors of the reconstruction (default 0.03); "
-                                          "smaller lets the shape move further") +
+         help_option("--anchor-weight A", "weight of the positional anchors of the reconstruction (default " +
+                                              format_number(HD::defaults::shape_filter_anchor_weight) +
+                                              "); smaller lets the shape move further") +
          help_option("-o OUT", "the edited mesh, .off, .obj, .ply or .stl (default: MESH's name with _enhanced.off, "
                                "in the current folder)") +
          help_option("--json", "print a JSON summary on stdout: the variance of the NS before and after, the largest "
@@ -103,9 +115,13 @@ inline Command enhance_command()
   command.help = enhance_help;
   command.run = [](Run& r) {
     const Diffusion_options& o = r.diffusion;
-    const std::vector<double> weights = parse_weights(r.args.value("--weights", "1,3,3"));
-    const Steps_per_level steps_per_level = parse_steps_per_level(r.args, o);
-    const double anchor_weight = parse_number("--anchor-weight", r.args.value("--anchor-weight", "0.03"), 0., true);
+    const std::vector<double> weights =
+        parse_weights(r.args.value("--weights", weight_list_text(HD::defaults::enhancement_weights)));
+    const std::optional<std::size_t> steps_per_level = parse_steps_per_level(r.args, o);
+    const std::optional<double> anchor_weight =
+        r.args.has("--anchor-weight")
+            ? std::optional<double>(parse_number("--anchor-weight", r.args.value("--anchor-weight", ""), 0., true))
+            : std::nullopt;
     const std::string output = r.args.value("-o", default_output(r.input, "_enhanced.off"));
     mesh_format(output);
     r.check_outputs({output});
@@ -115,14 +131,13 @@ inline Command enhance_command()
     const Mesh original = mesh;
     const double input_variance = for_input(r.input, [&] { return normal_signature_variance(mesh); });
     r.timer.stop("ncc");
-    // filter_shape() always gets the steps per level and the anchor weight, with its own
-    // defaults when they are not given (test_applications checks that they are its
+    // The steps per level and the anchor weight as given, or empty (filter_shape()'s own
     // defaults): one instantiation of it, not one per combination of options given.
     Progress_bar progress("eigen solve", !r.quiet);
     for_input(r.input, [&] {
       with_diffusion_parameters(o, progress, [&](const auto& np) {
         HD::filter_shape(mesh, weights,
-                         HD::parameters::combine(np, HD::parameters::steps_per_level(steps_per_level.value),
+                         HD::parameters::combine(np, HD::parameters::steps_per_level(steps_per_level),
                                                  HD::parameters::anchor_weight(anchor_weight)));
       });
     });
@@ -153,9 +168,15 @@ inline Command enhance_command()
     r.summary.string("output", output)
         .integer("vertices", (long long)mesh.number_of_vertices())
         .raw("weights", weight_list + "]")
-        .integer("steps_per_level", (long long)steps_per_level.value);
-    add_diffusion_json(r.summary, o, mesh.number_of_vertices(), nullptr);
-    r.summary.number("anchor_weight", anchor_weight)
+        .integer("steps_per_level",
+                 (long long)steps_per_level.value_or(HD::defaults::shape_filter_steps_per_level));
+    std::vector<std::string> own_given;
+    if(steps_per_level)
+      own_given.push_back("steps_per_level");
+    if(anchor_weight)
+      own_given.push_back("anchor_weight");
+    add_diffusion_json(r.summary, o, mesh.number_of_vertices(), nullptr, nullptr, own_given);
+    r.summary.number("anchor_weight", anchor_weight.value_or(HD::defaults::shape_filter_anchor_weight))
         .number("ns_variance_before", input_variance)
         .number("ns_variance_after", output_variance)
         .number("max_displacement_relative", relative_displacement);

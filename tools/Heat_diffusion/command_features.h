@@ -29,19 +29,28 @@ inline std::string json_index_list(const std::vector<Mesh::Vertex_index>& vertic
   return s + "]";
 }
 
-// Parses --c, the threshold of the feature criterion, in [0, 1].
-inline double parse_feature_threshold(const Arguments& args)
+// Parses --c, the threshold of the feature criterion, in [0, 1]; empty if not given
+// (the library's default).
+inline std::optional<double> parse_feature_threshold(const Arguments& args)
 {
-  const double c = parse_number("--c", args.value("--c", "0.8"), 0., false);
+  if(!args.has("--c"))
+    return std::nullopt;
+  const double c = parse_number("--c", args.value("--c", ""), 0., false);
   if(c > 1)
     throw Usage_error("--c must be in [0, 1], not '" + args.value("--c", "") + "'");
   return c;
 }
 
+inline std::string feature_threshold_help()
+{
+  return help_option("--c C", "the threshold c in [0, 1] (default " + format_number(HD::defaults::feature_threshold) +
+                                  ")");
+}
+
 inline Diffusion_spec features_spec()
 {
   Diffusion_spec spec;
-  spec.steps_help = "the scales k, 0 to 1000000 (default 0,10,40)";
+  spec.steps_help = "the scales k, 0 to 1000000 (default " + spec.steps_default + ")";
   spec.field = true;
   return spec;
 }
@@ -59,7 +68,7 @@ inline std::string features_help()
          "\n"
          "Options:\n" +
          diffusion_options_help(features_spec()) +
-         help_option("--c C", "the threshold c in [0, 1] (default 0.8)") +
+         feature_threshold_help() +
          help_option("-o PREFIX",
                      "outputs PREFIX_k<K>.ply (default: MESH's name with _features, in the current folder): binary "
                      "PLYs with the vertex properties 'feature' (+1 convex, -1 concave, 0 else) and 'field' (F^k), "
@@ -95,7 +104,7 @@ inline Command features_command()
   command.help = features_help;
   command.run = [](Run& r) {
     const Diffusion_options& o = r.diffusion;
-    const double c = parse_feature_threshold(r.args);
+    const std::optional<double> c = parse_feature_threshold(r.args);
     const std::string prefix = r.args.value("-o", default_output(r.input, "_features"));
     const std::vector<std::string> outputs = step_outputs(prefix, o.steps);
     r.check_outputs(outputs, {o.field});
@@ -131,8 +140,8 @@ inline Command features_command()
     for(std::size_t s = 0; s < o.steps.size(); ++s)
     {
       write_fields_ply(files, outputs[s], mesh,
-                       {{"feature", feature_labels(convex[s], concave[s], mesh.number_of_vertices())},
-                        {"field", values[s]}},
+                       r.with_origin({{"feature", feature_labels(convex[s], concave[s], mesh.number_of_vertices())},
+                                      {"field", values[s]}}),
                        1.);
       Json_object scale;
       scale.raw("convex", json_index_list(convex[s])).raw("concave", json_index_list(concave[s]));
@@ -152,8 +161,9 @@ inline Command features_command()
       std::cerr << "written to " << prefix << "_k*.ply\n";
     }
     r.summary.string("field", o.field).object("outputs", names).integer("vertices", (long long)mesh.number_of_vertices());
-    add_diffusion_json(r.summary, o, mesh.number_of_vertices(), setup.kernel.get());
-    r.summary.number("c", c)
+    add_diffusion_json(r.summary, o, mesh.number_of_vertices(), setup.kernel.get(), &diffusion,
+                       c ? std::vector<std::string>{"feature_threshold"} : std::vector<std::string>{});
+    r.summary.number("c", c.value_or(HD::defaults::feature_threshold))
         .object("heat_regions", heat_region_json(diffusion.region_statistics()))
         .object("features", per_scale);
   };

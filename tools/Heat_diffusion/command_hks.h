@@ -27,9 +27,9 @@ namespace heat_diffusion_cli {
 inline Diffusion_spec hks_spec()
 {
   Diffusion_spec spec;
-  spec.sigma_default = "inf";
+  spec.sigma_default = HD::defaults::heat_kernel_signature::sigma;
   spec.sigma_note = "'inf' (the default) is the plain Laplacian of the classical HKS";
-  spec.time_default = "20";
+  spec.time_default = HD::defaults::heat_kernel_signature::time;
   spec.time_note = "the time t of the signature";
   spec.time_alias = true;
   spec.steps = Diffusion_spec::no_steps;
@@ -51,7 +51,7 @@ inline std::string hks_help()
          "tool warns below that bound. No diffusion steps: hks takes no -k.\n"
          "\n"
          "Options:\n" +
-         diffusion_options_help(hks_spec()) + help_option("--c C", "the threshold c in [0, 1] (default 0.8)") +
+         diffusion_options_help(hks_spec()) + feature_threshold_help() +
          help_option("-o OUT.ply", "output (default: MESH's name with _hks.ply, in the current folder): a binary PLY "
                                    "with the vertex properties 'maximum' (1 at the maxima, red; 0 elsewhere, light "
                                    "grey) and 'hks'") +
@@ -69,9 +69,13 @@ inline Command hks_command()
   command.diffusion = hks_spec();
   command.help = hks_help;
   command.run = [](Run& r) {
-    const Diffusion_options& o = r.diffusion;
-    const double t = o.time;
-    const double c = parse_feature_threshold(r.args);
+    // The classical signature's sigma and t unless given (the kernel's own sigma is not
+    // that of the classical signature).
+    Diffusion_options o = r.diffusion;
+    if(!o.sigma)
+      o.sigma = HD::defaults::heat_kernel_signature::sigma;
+    const double t = o.time.value_or(HD::defaults::heat_kernel_signature::time);
+    const std::optional<double> c = parse_feature_threshold(r.args);
     const std::string output = r.args.value("-o", default_output(r.input, "_hks.ply"));
     r.check_outputs({output});
 
@@ -95,7 +99,7 @@ inline Command hks_command()
       is_maximum[v.idx()] = 1.;
     mesh.remove_property_map(hks);
     r.timer.stop("hks_and_maxima");
-    write_fields_ply(output, mesh, {{"maximum", is_maximum}, {"hks", values}}, 1.);
+    write_fields_ply(output, mesh, r.with_origin({{"maximum", is_maximum}, {"hks", values}}), 1.);
     r.timer.stop("write");
 
     // The truncated kernel needs e^(-lambda_m t) <= 1e-4 to be accurate.
@@ -110,10 +114,12 @@ inline Command hks_command()
       std::cerr << maxima.size() << " HKS maxima; written to " << output << "\n";
     }
     r.summary.string("output", output).integer("vertices", (long long)mesh.number_of_vertices());
-    add_diffusion_json(r.summary, o, mesh.number_of_vertices(), kernel.get());
+    add_diffusion_json(r.summary, r.diffusion, mesh.number_of_vertices(), kernel.get(), nullptr,
+                       c ? std::vector<std::string>{"feature_threshold"} : std::vector<std::string>{},
+                       HD::defaults::heat_kernel_signature::sigma, HD::defaults::heat_kernel_signature::time);
     r.summary.number("t", t)
         .number("t_min", t_min)
-        .number("c", c)
+        .number("c", c.value_or(HD::defaults::feature_threshold))
         .object("hks", statistics(values).json())
         .raw("maxima", json_index_list(maxima));
   };

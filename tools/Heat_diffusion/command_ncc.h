@@ -19,7 +19,7 @@
 namespace heat_diffusion_cli {
 
 const char* const ncc_help =
-    "Usage: heat_diffusion ncc MESH [-o OUT.ply] [--normals area|pmp] [--json] [--quiet]\n"
+    "Usage: heat_diffusion ncc MESH [-o OUT.ply] [--normals area|pmp] [--json] [--quiet] [--no-repair]\n"
     "\n"
     "Computes the Normal-Controlled Coordinates (NCC) of every vertex and their Normal\n"
     "Signature NS = NCC . normal: a scale- and rotation-invariant scalar field, positive at\n"
@@ -39,16 +39,18 @@ const char* const ncc_help =
     "  --quiet           print nothing but errors (and the JSON summary if asked for)\n"
     "  -h, --help        this text\n";
 
+inline std::string ncc_help_text() { return ncc_help + repair_option_help(); }
+
 inline Command ncc_command()
 {
   Command command;
   command.name = "ncc";
   command.overview = "ncc MESH     Normal-Controlled Coordinates and the Normal Signature (NS) of a mesh";
   command.valued = {"-o", "--normals"};
-  command.help = [] { return std::string(ncc_help); };
+  command.help = ncc_help_text;
   command.run = [](Run& r) {
     const std::string output = r.args.value("-o", default_output(r.input, "_ns.ply"));
-    const std::string normals = r.args.value("--normals", "area");
+    const std::string normals = r.args.value("--normals", "area");  // the library's default rule
     if(normals != "area" && normals != "pmp")
       throw Usage_error("--normals must be 'area' or 'pmp', not '" + normals + "'");
     r.check_outputs({output});
@@ -62,14 +64,16 @@ inline Command ncc_command()
         for(auto v : mesh.vertices())
           ns[v.idx()] = ncc.normal_signature(v);
       };
-      if(normals == "pmp")
+      if(!r.args.has("--normals"))
+        compute(HD::parameters::default_values());
+      else if(normals == "pmp")
         compute(HD::parameters::vertex_normal_rule(HD::Polygon_mesh_processing_vertex_normals()));
       else
         compute(HD::parameters::vertex_normal_rule(HD::Area_weighted_vertex_normals()));
     });
     r.timer.stop("ncc");
 
-    write_fields_ply(output, mesh, {{"ns", ns}});
+    write_fields_ply(output, mesh, r.with_origin({{"ns", ns}}));
     r.timer.stop("write");
 
     const Field_statistics s = statistics(ns);

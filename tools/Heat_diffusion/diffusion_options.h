@@ -14,10 +14,12 @@
 #include <CGAL/Heat_diffusion/Anisotropic_heat_diffusion.h>
 #include <CGAL/Heat_diffusion/Edge_weighted_heat_kernel.h>
 #include <CGAL/Heat_diffusion/heat_kernel_method.h>
+#include <CGAL/Heat_diffusion/parameter_defaults.h>
 
 #include <cmath>
 #include <cstdlib>
 #include <limits>
+#include <optional>
 #include <string>
 #include <vector>
 
@@ -31,18 +33,32 @@ constexpr double maximum_eigenpairs = 1000000;
 constexpr double maximum_coarse_vertex_count = 1000000000;
 constexpr double maximum_steps = 1000000;
 
-// What a subcommand takes of the shared diffusion options, with its defaults.
+// The steps "0,10,40" of a list of them.
+template <typename Steps>
+std::string step_list_text(const Steps& steps)
+{
+  std::string text;
+  for(std::size_t k : steps)
+    text += (text.empty() ? "" : ",") + std::to_string(k);
+  return text;
+}
+
+// What a subcommand takes of the shared diffusion options. The defaults are the
+// library's, shown by --help; the options that are not given are not passed to the
+// library (Diffusion_options), so that its defaults apply, adaptive ones included.
 struct Diffusion_spec
 {
   enum Steps { no_steps, step_list, single_step };
 
-  std::string sigma_default = "0.1";
+  double sigma_default = HD::defaults::sigma;
   std::string sigma_note;            // appended to the help of --sigma
-  std::string time_default = "1";
+  double time_default = HD::defaults::time;
   std::string time_note;             // appended to the help of --time
   bool time_alias = false;           // -t is --time (hks)
   Steps steps = step_list;           // -k
-  std::string steps_default = "0,10,40";
+  // The default of -k: for a step list, the steps written (the tool's, from the
+  // library's feature scales); for a single step, the library's default, for --help.
+  std::string steps_default = step_list_text(HD::defaults::feature_scales);
   std::string steps_help;            // the help of -k
   std::string local_refusal;         // why --kernel local is refused; empty if supported
   std::string coarse_refusal;        // why --coarse is refused; empty if supported
@@ -51,37 +67,54 @@ struct Diffusion_spec
   bool field = false;                // --field ns|FILE
 };
 
-// The parsed options.
+// The parsed options: those given, as given; an empty optional is an option not given,
+// whose default the library chooses (with_diffusion_parameters() passes it empty).
 struct Diffusion_options
 {
-  double sigma = 0.1;
-  double time = 1.;
-  HD::Heat_kernel_method method = HD::Heat_kernel_method::local;  // never automatic: resolved by the parser
-  bool automatic_method = true;                                   // --kernel not given
-  HD::Operator_normalization normalization = HD::Operator_normalization::balanced;  // --normalization
+  std::optional<double> sigma;
+  std::optional<double> time;
+  std::optional<HD::Heat_kernel_method> kernel;  // --kernel as given (automatic included)
+  // The kernel the library selects (never automatic): by the library's rule for
+  // Heat_kernel_method::automatic, for the stages the tool times and reports.
+  HD::Heat_kernel_method method = HD::Heat_kernel_method::local;
+  bool automatic_method = true;  // --kernel not given, or automatic
+  std::optional<HD::Operator_normalization> normalization;
   bool builds_operator = true;  // the subcommand builds A_t (and so has --normalization)
-  std::size_t eigenpairs = 150;
-  long long coarse = -1;  // -1: the package's automatic choice
+  std::optional<std::size_t> eigenpairs;
+  std::optional<long long> coarse;  // not given: the library's automatic coarse level
   bool scale_invariant = false;
-  std::vector<std::size_t> steps;  // -k (one entry for a single_step spec)
+  std::vector<std::size_t> steps;        // -k of a step list (the default list if not given)
+  std::optional<std::size_t> step_count;  // -k of a single step, if given
   std::string field = "ns";
   std::string time_option = "--time";
   bool json = false;
   bool quiet = false;
 
   bool local() const { return method == HD::Heat_kernel_method::local; }
-  std::string kernel_name() const { return local() ? "local" : "spectral"; }
-  std::string normalization_name() const
+  // The time of one step, for the calls that take it as an argument (A_t from a spectral
+  // kernel): the one given, or the library's default.
+  double time_or_default() const { return time.value_or(HD::defaults::time); }
+  // The names of the options given, as the library's named parameters, for the JSON summary.
+  std::vector<std::string> given() const
   {
-    return normalization == HD::Operator_normalization::balanced ? "balanced" : "columns";
+    std::vector<std::string> names;
+    if(sigma) names.push_back("sigma");
+    if(time) names.push_back("time");
+    if(kernel) names.push_back("kernel_method");
+    if(normalization) names.push_back("operator_normalization");
+    if(eigenpairs) names.push_back("number_of_eigenpairs");
+    if(coarse) names.push_back("coarse_vertex_count");
+    if(scale_invariant) names.push_back("scale_invariant_kernel");
+    return names;
   }
+  std::string kernel_name() const { return local() ? "local" : "spectral"; }
 };
 
 // The arguments of a subcommand: the shared options of `spec`, plus its own.
 inline Arguments diffusion_arguments(const Diffusion_spec& spec, std::vector<std::string> flags,
                                      std::vector<std::string> valued)
 {
-  for(const char* f : {"--json", "--quiet", "-h", "--help"})
+  for(const char* f : {"--json", "--quiet", "--no-repair", "-h", "--help"})
     flags.push_back(f);
   if(spec.scale_invariant)
     flags.push_back("--scale-invariant");
@@ -104,21 +137,26 @@ inline Diffusion_options parse_diffusion_options(const Arguments& args, const Di
   o.json = args.flag("--json");
   o.quiet = args.flag("--quiet");
 
-  const std::string sigma_text = args.value("--sigma", spec.sigma_default);
-  if(sigma_text == "inf")
-    o.sigma = std::numeric_limits<double>::infinity();
-  else
+  if(args.has("--sigma"))
   {
-    char* end = nullptr;
-    o.sigma = std::strtod(sigma_text.c_str(), &end);
-    if(sigma_text.empty() || *end != '\0' || !std::isfinite(o.sigma) || !(o.sigma > 0))
-      throw Usage_error("--sigma must be a number > 0 or 'inf', not '" + sigma_text + "'");
+    const std::string sigma_text = args.value("--sigma", "");
+    if(sigma_text == "inf")
+      o.sigma = std::numeric_limits<double>::infinity();
+    else
+    {
+      char* end = nullptr;
+      const double sigma = std::strtod(sigma_text.c_str(), &end);
+      if(sigma_text.empty() || *end != '\0' || !std::isfinite(sigma) || !(sigma > 0))
+        throw Usage_error("--sigma must be a number > 0 or 'inf', not '" + sigma_text + "'");
+      o.sigma = sigma;
+    }
   }
 
   if(spec.time_alias && args.has("-t") && args.has("--time"))
     throw Usage_error("give the time once, with -t or --time");
   o.time_option = spec.time_alias && args.has("-t") ? "-t" : "--time";
-  o.time = parse_number(o.time_option, args.value(o.time_option, spec.time_default), 0., true);
+  if(args.has(o.time_option))
+    o.time = parse_number(o.time_option, args.value(o.time_option, ""), 0., true);
 
   // --kernel automatic is the package's Heat_kernel_method::automatic, by the package's
   // rule: spectral when the eigenpairs are asked for (-m, --coarse, --scale-invariant,
@@ -127,30 +165,37 @@ inline Diffusion_options parse_diffusion_options(const Arguments& args, const Di
   if(kernel != "spectral" && kernel != "local" && kernel != "automatic")
     throw Usage_error("--kernel must be 'automatic', 'spectral' or 'local', not '" + kernel + "'");
   o.automatic_method = kernel == "automatic";
+  const HD::Heat_kernel_method requested = kernel == "local"      ? HD::Heat_kernel_method::local
+                                           : kernel == "spectral" ? HD::Heat_kernel_method::spectral
+                                                                  : HD::Heat_kernel_method::automatic;
+  if(args.has("--kernel"))
+    o.kernel = requested;
+  // A subcommand without a local kernel (hks) builds the spectral kernel itself.
   const bool eigenpairs_requested = args.has("-m") || args.has("--coarse") ||
                                     (spec.scale_invariant && args.flag("--scale-invariant")) ||
                                     !spec.local_refusal.empty();
-  o.method = HD::internal::choose_kernel_method(kernel == "local"       ? HD::Heat_kernel_method::local
-                                                : kernel == "spectral" ? HD::Heat_kernel_method::spectral
-                                                                       : HD::Heat_kernel_method::automatic,
-                                                eigenpairs_requested);
+  o.method = HD::internal::choose_kernel_method(requested, eigenpairs_requested);
   if(o.local() && !spec.local_refusal.empty())
     throw Usage_error("--kernel local: " + spec.local_refusal);
 
   o.builds_operator = spec.normalization;
-  const std::string normalization = args.value("--normalization", "balanced");
-  if(normalization != "balanced" && normalization != "columns")
-    throw Usage_error("--normalization must be 'balanced' or 'columns', not '" + normalization + "'");
-  o.normalization = normalization == "balanced" ? HD::Operator_normalization::balanced
-                                                : HD::Operator_normalization::columns;
+  if(args.has("--normalization"))
+  {
+    const std::string normalization = args.value("--normalization", "");
+    if(normalization != "balanced" && normalization != "columns")
+      throw Usage_error("--normalization must be 'balanced' or 'columns', not '" + normalization + "'");
+    o.normalization = normalization == "balanced" ? HD::Operator_normalization::balanced
+                                                  : HD::Operator_normalization::columns;
+  }
 
-  o.eigenpairs = parse_count("-m", args.value("-m", "150"), 1, maximum_eigenpairs);
+  if(args.has("-m"))
+    o.eigenpairs = parse_count("-m", args.value("-m", ""), 1, maximum_eigenpairs);
   if(args.has("--coarse"))
   {
     if(!spec.coarse_refusal.empty())
       throw Usage_error("--coarse: " + spec.coarse_refusal);
     o.coarse = (long long)parse_count("--coarse", args.value("--coarse", ""), 0, maximum_coarse_vertex_count);
-    if(o.coarse > 0 && o.coarse < 4)
+    if(*o.coarse > 0 && *o.coarse < 4)
       throw Usage_error("--coarse must be 0 (no coarse level) or at least 4, not '" + args.value("--coarse", "") + "'");
   }
   o.scale_invariant = spec.scale_invariant && args.flag("--scale-invariant");
@@ -168,8 +213,8 @@ inline Diffusion_options parse_diffusion_options(const Arguments& args, const Di
 
   if(spec.steps == Diffusion_spec::step_list)
     o.steps = parse_steps(args.value("-k", spec.steps_default));
-  else if(spec.steps == Diffusion_spec::single_step)
-    o.steps = {parse_count("-k", args.value("-k", spec.steps_default), 0, maximum_steps)};
+  else if(spec.steps == Diffusion_spec::single_step && args.has("-k"))
+    o.step_count = parse_count("-k", args.value("-k", ""), 0, maximum_steps);
   if(spec.field)
     o.field = args.value("--field", "ns");
   return o;
@@ -179,12 +224,13 @@ inline Diffusion_options parse_diffusion_options(const Arguments& args, const Di
 inline std::string diffusion_options_help(const Diffusion_spec& spec)
 {
   std::string h;
-  h += help_option("--sigma S", "edge-weight width of the kernel (default " + spec.sigma_default +
+  h += help_option("--sigma S", "edge-weight width of the kernel (default " + format_number(spec.sigma_default) +
                                     "): small preserves features (0.1), large smooths (1), 'inf' is "
                                     "isotropic" + (spec.sigma_note.empty() ? "" : "; " + spec.sigma_note));
   h += help_option(spec.time_alias ? "-t, --time T" : "--time T",
                    (spec.time_note.empty() ? "time of one diffusion step" : spec.time_note) +
-                       ", on the mesh rescaled to area = vertex count (default " + spec.time_default + ")");
+                       ", on the mesh rescaled to area = vertex count (default " + format_number(spec.time_default) +
+                       ")");
   if(spec.local_refusal.empty())
     h += help_option("--kernel K",
                      "'local': each kernel column computed around its vertex, without eigenpairs and without "
@@ -203,7 +249,7 @@ inline std::string diffusion_options_help(const Diffusion_spec& spec)
                    "paper's A_t, whose columns alone sum to 1: heat is conserved, but a constant field is not "
                    "kept (vertices whose region collapsed gather heat)");
   h += help_option("-m M", "number of eigenpairs of the spectral kernel, 1 to 1000000, clamped to the vertex count "
-                           "(default 150)");
+                           "(default " + std::to_string(HD::defaults::number_of_eigenpairs) + ")");
   if(spec.coarse_refusal.empty())
     h += help_option("--coarse N",
                      "compute the eigenpairs on a copy simplified to about N vertices and prolongate them to the "
@@ -224,9 +270,20 @@ inline std::string diffusion_options_help(const Diffusion_spec& spec)
 }
 
 // The help of --quiet and -h, the same for every subcommand, and the progress note.
+inline std::string repair_option_help()
+{
+  return help_option("--no-repair", "refuse an input that is no mesh the package can process, instead of "
+                                    "repairing it with CGAL's repair functions (duplicate points merged, "
+                                    "degenerate and duplicate polygons removed, faces reoriented, non-manifold "
+                                    "vertices split, isolated vertices and faces of zero area removed: the "
+                                    "default, said on stderr and in --json's \"repair\"; PLY outputs then give "
+                                    "each vertex's vertex in the file as the property 'origin')");
+}
+
 inline std::string common_options_help()
 {
-  return help_option("--quiet", "print nothing but errors (and the JSON summary if asked for); no progress bar") +
+  return repair_option_help() +
+         help_option("--quiet", "print nothing but errors (and the JSON summary if asked for); no progress bar") +
          help_option("-h, --help", "this text") +
          "\nA progress bar is shown on stderr for every stage that lasts more than a second (the eigen solve\n"
          "with the coarse level's simplification, the heat regions, the local kernel, the diffusion steps,\n"

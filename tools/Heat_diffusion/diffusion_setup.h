@@ -29,19 +29,25 @@ namespace HD = CGAL::Heat_diffusion;
 typedef HD::Edge_weighted_heat_kernel<Mesh> Heat_kernel;
 typedef HD::Anisotropic_heat_diffusion<Mesh> Diffusion;
 
-// Calls `f` with the named parameters of the kernel and the diffusion (the package's
-// automatic coarse level unless --coarse was given).
+// The named parameters of the kernel and the diffusion: the options given, the others
+// as empty optionals, which the library reads as not given (its defaults apply). The
+// kernel is the one the tool resolved by the library's rule (the same as the library's
+// own resolution of these parameters), so that the stages it times are those that run.
+inline auto diffusion_parameters(const Diffusion_options& o, Progress_bar& progress)
+{
+  return HD::parameters::combine(
+      HD::parameters::sigma(o.sigma), HD::parameters::time(o.time), HD::parameters::kernel_method(o.method),
+      HD::parameters::number_of_eigenpairs(o.eigenpairs),
+      HD::parameters::scale_invariant_kernel(o.scale_invariant ? std::optional<bool>(true) : std::nullopt),
+      HD::parameters::operator_normalization(o.normalization), HD::parameters::coarse_vertex_count(o.coarse),
+      HD::parameters::progress_callback(std::function<bool(double)>(std::ref(progress))));
+}
+
+// Calls `f` with diffusion_parameters().
 template <typename Function>
 auto with_diffusion_parameters(const Diffusion_options& o, Progress_bar& progress, Function&& f)
 {
-  const auto np = HD::parameters::combine(
-      HD::parameters::sigma(o.sigma), HD::parameters::time(o.time), HD::parameters::kernel_method(o.method),
-      HD::parameters::number_of_eigenpairs(o.eigenpairs), HD::parameters::scale_invariant_kernel(o.scale_invariant),
-      HD::parameters::operator_normalization(o.normalization),
-      HD::parameters::progress_callback(std::function<bool(double)>(std::ref(progress))));
-  if(o.coarse < 0)
-    return f(np);
-  return f(HD::parameters::combine(np, HD::parameters::coarse_vertex_count(std::size_t(o.coarse))));
+  return f(diffusion_parameters(o, progress));
 }
 
 // The spectral kernel of `mesh`, with a progress bar; errors name the input file.
@@ -84,7 +90,7 @@ inline Diffusion_setup make_diffusion(const Mesh& mesh, const Diffusion_options&
     Progress_bar progress("heat regions", !o.quiet);
     s.diffusion = for_input(input, [&] {
       return std::make_unique<Diffusion>(
-          *s.kernel, o.time,
+          *s.kernel, o.time_or_default(),
           HD::parameters::combine(HD::parameters::operator_normalization(o.normalization),
                                   HD::parameters::progress_callback(std::function<bool(double)>(std::ref(progress)))));
     });
@@ -99,36 +105,63 @@ inline Diffusion_setup make_diffusion(const Mesh& mesh, const Diffusion_options&
 // builds the kernel itself (filter_shape, denoise_mesh).
 inline std::size_t expected_coarse_vertex_count(const Diffusion_options& o, std::size_t n)
 {
-  return HD::internal::coarse_vertex_count_for(double(o.coarse), n);
+  return HD::internal::coarse_vertex_count_for(o.coarse ? double(*o.coarse) : -1., n);
 }
 
 // Says on stderr when the package chose a coarse level by itself.
 inline void note_automatic_coarse(const Diffusion_options& o, std::size_t n, std::size_t used)
 {
-  if(!o.quiet && !o.local() && o.coarse < 0 && used > 0)
+  if(!o.quiet && !o.local() && !o.coarse && used > 0)
     std::cerr << "note: " << n << " vertices (more than " << Heat_kernel::automatic_coarse_threshold
               << "): the eigenpairs are computed on a coarse level of " << used
               << " vertices (--coarse N to choose, --coarse 0 for the full computation)\n";
 }
 
-// The diffusion parameters of a JSON summary: sigma, time, kernel and, for the
-// spectral kernel, the eigenpairs and the coarse level ({"vertex_count": the size
-// used, 0 for none; "automatic": whether the package chose it}). Without a kernel
-// object (the package built it internally), the documented choice is reported.
-inline void add_diffusion_json(Json_object& summary, const Diffusion_options& o, std::size_t n,
-                               const Heat_kernel* kernel)
+// The names of a list, as a JSON array of strings.
+inline std::string json_string_list(const std::vector<std::string>& names)
 {
-  summary.number("sigma", o.sigma).number("time", o.time).string("kernel", o.kernel_name());
+  std::string list = "[";
+  for(std::size_t i = 0; i < names.size(); ++i)
+    list += (i ? ", \"" : "\"") + names[i] + "\"";
+  return list + "]";
+}
+
+// The diffusion parameters of a JSON summary, as used: "given", the named parameters
+// the user set (those of the diffusion, then the subcommand's own, `own_given`); sigma, time, the kernel and the normalization read from the diffusion
+// that ran, when there is one (else the values given or the library's defaults, which
+// are then what the library used); for the spectral kernel, the eigenpairs and the
+// coarse level ({"vertex_count": the size used, 0 for none; "automatic": whether the
+// package chose it}), from the kernel, else by the package's own rule.
+inline void add_diffusion_json(Json_object& summary, const Diffusion_options& o, std::size_t n,
+                               const Heat_kernel* kernel, const Diffusion* diffusion = nullptr,
+                               std::vector<std::string> own_given = {}, double sigma_default = HD::defaults::sigma,
+                               double time_default = HD::defaults::time)
+{
+  std::vector<std::string> given = o.given();
+  given.insert(given.end(), own_given.begin(), own_given.end());
+  summary.raw("given", json_string_list(given));
+  const double sigma = diffusion ? diffusion->sigma() : kernel ? kernel->sigma() : o.sigma.value_or(sigma_default);
+  const double time = diffusion ? diffusion->time() : o.time.value_or(time_default);
+  summary.number("sigma", sigma).number("time", time);
+  summary.string("kernel", diffusion ? (diffusion->kernel_method() == HD::Heat_kernel_method::local ? "local"
+                                                                                                      : "spectral")
+                                     : o.kernel_name());
   summary.boolean("kernel_automatic", o.automatic_method);
   if(o.builds_operator)
-    summary.string("normalization", o.normalization_name());
+  {
+    const HD::Operator_normalization normalization =
+        diffusion ? diffusion->operator_normalization()
+                  : o.normalization.value_or(HD::Operator_normalization::balanced);
+    summary.string("normalization", normalization == HD::Operator_normalization::balanced ? "balanced" : "columns");
+  }
   if(o.local())
     return;
   Json_object coarse;
   coarse.integer("vertex_count", (long long)(kernel ? kernel->coarse_vertex_count() : expected_coarse_vertex_count(o, n)))
-      .boolean("automatic", o.coarse < 0);
-  summary.integer("eigenpairs", (long long)(kernel ? kernel->number_of_eigenpairs() : (std::min)(o.eigenpairs, n)))
-      .boolean("scale_invariant", o.scale_invariant)
+      .boolean("automatic", !o.coarse);
+  summary.integer("eigenpairs", (long long)(kernel ? kernel->number_of_eigenpairs()
+                                                   : (std::min)(o.eigenpairs.value_or(HD::defaults::number_of_eigenpairs), n)))
+      .boolean("scale_invariant", kernel ? kernel->is_scale_invariant() : o.scale_invariant)
       .object("coarse", coarse);
 }
 

@@ -9,10 +9,11 @@
 #include "cli_errors.h"
 #include "fast_mesh_input.h"
 #include "mesh_input_checks.h"
+#include "mesh_repair.h"
 
 #include <CGAL/Exact_predicates_inexact_constructions_kernel.h>
+#include <CGAL/IO/read_points.h>
 #include <CGAL/IO/polygon_soup_io.h>
-#include <CGAL/Polygon_mesh_processing/triangulate_faces.h>
 #include <CGAL/Surface_mesh.h>
 #include <CGAL/boost/graph/helpers.h>
 
@@ -22,7 +23,9 @@
 #include <cstdint>
 #include <filesystem>
 #include <fstream>
+#include <iostream>
 #include <limits>
+#include <sstream>
 #include <string>
 #include <utility>
 #include <vector>
@@ -34,50 +37,6 @@ namespace fs = std::filesystem;
 // The mesh type of the tool.
 typedef CGAL::Exact_predicates_inexact_constructions_kernel Kernel;
 typedef CGAL::Surface_mesh<Kernel::Point_3> Mesh;
-
-// CGAL::Polygon_mesh_processing::triangulate_faces(), made safe on hostile input:
-// - It measures face normals and orientations with products of three or four
-//   coordinates: beyond about 1e77 they overflow, and the exact fallback of the
-//   predicates converts the infinity to a rational, which raises SIGFPE. The faces are
-//   triangulated on a copy scaled by a power of two into [-1, 1]: the scaling is exact,
-//   so the predicates' signs and the triangles are those of the mesh itself. The copy,
-//   which keeps the vertex indices, then takes the original points back.
-// - Its default for faces of five or more vertices, a constrained Delaunay
-//   triangulation in the plane of the face, reads a null face handle (undefined
-//   behaviour) when a non-planar face's projection intersects itself (found by
-//   fuzzing). The hole filling it offers instead works in 3D, on any polygon.
-// - On a polygon with two vertices at one point, it can leave a broken halfedge
-//   structure (a halfedge whose target is no vertex of the mesh: the package then read
-//   out of bounds, found by fuzzing). The result is checked as the mesh builder checks
-//   a mesh read from a file.
-inline bool triangulate_polygon_faces(Mesh& mesh)
-{
-  double largest = 0;
-  for(auto v : vertices(mesh))
-  {
-    const Kernel::Point_3& p = mesh.point(v);
-    largest = (std::max)({largest, std::abs(p.x()), std::abs(p.y()), std::abs(p.z())});
-  }
-  if(!std::isfinite(largest))
-    return false;  // (not scaled either: the package rejects such a mesh anyway)
-  int exponent = 0;
-  std::frexp(largest, &exponent);
-  Mesh scaled = mesh;
-  for(auto v : vertices(scaled))
-  {
-    const Kernel::Point_3& p = mesh.point(v);
-    scaled.point(v) = Kernel::Point_3(std::ldexp(p.x(), -exponent), std::ldexp(p.y(), -exponent),
-                                      std::ldexp(p.z(), -exponent));
-  }
-  if(!CGAL::Polygon_mesh_processing::triangulate_faces(
-         scaled, CGAL::parameters::use_delaunay_triangulation(false)) ||
-     !CGAL::is_valid_polygon_mesh(scaled))
-    return false;
-  for(auto v : vertices(scaled))
-    scaled.point(v) = mesh.point(v);
-  mesh = std::move(scaled);
-  return true;
-}
 
 // Throws Input_error when a face of a polygon soup refers to a vertex the soup does
 // not have. CGAL's soup readers keep the indices of a file unchecked (a negative PLY
@@ -122,18 +81,51 @@ fast_input::Soup soup_of(const std::vector<Point>& points, const std::vector<std
   return soup;
 }
 
-// Reads any format CGAL::IO::read_polygon_soup reads (OFF, OBJ, PLY, STL, GOCAD, ...)
-// to the mesh CGAL::IO::read_polygon_mesh builds from it, without repair (a soup that
-// is not a manifold mesh is rejected), but with what that function leaves unchecked
-// checked first: the counts of OFF and PLY files, and the face indices of every
-// format. Returns false where CGAL's reader or builder fails; throws Input_error
-// (the message starts with `path`) on a hostile file.
-template <typename Mesh>
-bool read_checked_polygon_mesh(const std::string& path, Mesh& mesh)
+// What CGAL's readers print on std::cerr while this object lives, kept instead of
+// printed: the tool says one thing per failure, and puts what they knew (a line
+// number) into its own message.
+class Captured_error_stream
+{
+public:
+  Captured_error_stream() : previous_(std::cerr.rdbuf(text_.rdbuf())) {}
+  ~Captured_error_stream() { std::cerr.rdbuf(previous_); }
+  Captured_error_stream(const Captured_error_stream&) = delete;
+  Captured_error_stream& operator=(const Captured_error_stream&) = delete;
+
+  // What was printed, on one line, in parentheses after a space; empty if nothing.
+  std::string note() const
+  {
+    std::string text = text_.str();
+    std::replace(text.begin(), text.end(), '\n', ' ');
+    while(!text.empty() && text.back() == ' ')
+      text.pop_back();
+    return text.empty() ? text : " (CGAL's reader: " + text + ")";
+  }
+
+private:
+  std::ostringstream text_;
+  std::streambuf* previous_;
+};
+
+// The lower-case extension of `path`, with its dot.
+inline std::string lower_case_extension(const std::string& path)
 {
   std::string extension = fs::path(path).extension().string();
   std::transform(extension.begin(), extension.end(), extension.begin(),
                  [](unsigned char ch) { return char(std::tolower(ch)); });
+  return extension;
+}
+
+// Reads any format CGAL::IO::read_polygon_soup reads (OFF, OBJ, PLY, STL, GOCAD, ...)
+// to its points and polygons, with what that function leaves unchecked checked first:
+// the counts of OFF and PLY files, and the face indices of every format. Returns false
+// where CGAL's reader fails, with what it printed in `note`; throws Input_error (the
+// message starts with `path`) on a hostile file.
+template <typename Point>
+bool read_checked_polygon_soup(const std::string& path, std::vector<Point>& points,
+                               std::vector<std::vector<std::size_t> >& polygons, std::string& note)
+{
+  const std::string extension = lower_case_extension(path);
   try
   {
     if(extension == ".off" || extension == ".ply")
@@ -145,12 +137,18 @@ bool read_checked_polygon_mesh(const std::string& path, Mesh& mesh)
       else
         check_ply_stream(is, fs::file_size(path, ec));
     }
-    std::vector<typename Mesh::Point> points;
-    std::vector<std::vector<std::size_t> > polygons;
-    if(!CGAL::IO::read_polygon_soup(path, points, polygons))
+    bool read = false;
+    {
+      // Verbose for PLY, whose reader then says which line it could not read (kept for the
+      // message); the others print progress on std::cout, or their errors anyway.
+      const Captured_error_stream errors;
+      read = CGAL::IO::read_polygon_soup(path, points, polygons, CGAL::parameters::verbose(extension == ".ply"));
+      note = errors.note();
+    }
+    if(!read)
       return false;
     check_face_indices(polygons, points.size(), extension == ".obj");
-    return fast_input::build_mesh(soup_of(points, polygons), mesh);
+    return true;
   }
   catch(const Input_error& e)
   {
@@ -162,28 +160,159 @@ bool read_checked_polygon_mesh(const std::string& path, Mesh& mesh)
   }
 }
 
+// The mesh CGAL::IO::read_polygon_mesh builds from the soup of read_checked_polygon_soup(),
+// without repair (a soup that is not a manifold mesh is rejected: false).
+template <typename Mesh>
+bool read_checked_polygon_mesh(const std::string& path, Mesh& mesh, std::string& note)
+{
+  std::vector<typename Mesh::Point> points;
+  std::vector<std::vector<std::size_t> > polygons;
+  if(!read_checked_polygon_soup(path, points, polygons, note))
+    return false;
+  try
+  {
+    return fast_input::build_mesh(soup_of(points, polygons), mesh);
+  }
+  catch(const Input_error& e)
+  {
+    throw Input_error(path + ": " + e.what());
+  }
+  catch(const std::exception& e)
+  {
+    throw Input_error(path + ": cannot read a polygon mesh (" + e.what() + ")");
+  }
+}
+
+template <typename Mesh>
+bool read_checked_polygon_mesh(const std::string& path, Mesh& mesh)
+{
+  std::string note;
+  return read_checked_polygon_mesh(path, mesh, note);
+}
+
+// The soup of a file: the fast parsers' where they read it, else CGAL's readers'.
+template <typename Point>
+bool read_any_polygon_soup(const std::string& path, std::vector<Point>& points,
+                           std::vector<std::vector<std::size_t> >& polygons, std::string& note)
+{
+  fast_input::Soup soup;
+  bool fast = false;
+  try
+  {
+    fast = fast_input::read_soup(path, soup);
+  }
+  catch(const std::bad_alloc&)  // CGAL's reader reports it as before
+  {
+  }
+  if(!fast)
+    return read_checked_polygon_soup(path, points, polygons, note);
+  points.clear();
+  polygons.clear();
+  for(std::size_t i = 0; i < soup.number_of_vertices(); ++i)
+    points.emplace_back(soup.coordinates[3 * i], soup.coordinates[3 * i + 1], soup.coordinates[3 * i + 2]);
+  for(std::size_t f = 0; f < soup.number_of_faces(); ++f)
+    polygons.emplace_back(soup.indices.begin() + std::ptrdiff_t(soup.starts[f]),
+                          soup.indices.begin() + std::ptrdiff_t(soup.starts[f + 1]));
+  return true;
+}
+
+// Throws the Input_error of a file that is read but holds no face: a point set (the
+// tool's subcommands need a mesh), or nothing.
+[[noreturn]] inline void throw_no_faces(const std::string& path, std::size_t points)
+{
+  if(points > 0)
+    throw Input_error(path + ": this file holds points and no faces (" + std::to_string(points) +
+                      " points): the subcommands need a triangle mesh");
+  throw Input_error(path + ": the mesh has no faces");
+}
+
+// The points of a file that CGAL::IO::read_points() reads (XYZ, PWN, PLY, OFF without
+// faces, LAS), for the message about a point set; 0 where it reads none.
+inline std::size_t number_of_points_in(const std::string& path)
+{
+  const std::string extension = lower_case_extension(path);
+  if(extension != ".xyz" && extension != ".pwn")
+    return 0;
+  std::vector<Kernel::Point_3> points;
+  const Captured_error_stream errors;  // (its messages: this file is refused for another reason)
+  try
+  {
+    if(!CGAL::IO::read_points(path, std::back_inserter(points)))
+      return 0;
+  }
+  catch(const std::exception&)
+  {
+    return 0;
+  }
+  return points.size();
+}
+
 // Reads a mesh file as read_checked_polygon_mesh() does, and triangulates polygon
 // faces. OFF, PLY and OBJ files usually take the fast reader, which reads the same
 // mesh; it declines every file it does not read, and those go to
 // read_checked_polygon_mesh(). Returns the number of faces that were triangulated.
+// With `repair`, a file that is no mesh the package can process (a polygon soup that
+// is not a manifold mesh, isolated or non-manifold vertices, faces of zero area) is read
+// as a soup and repaired (repair_polygon_soup_to_mesh()): `repair` then says what
+// changed, and how the vertices relate to the file's; it is left empty where the file's
+// mesh needs no repair.
 template <typename Mesh>
-std::size_t read_triangle_mesh(const std::string& path, Mesh& mesh)
+std::size_t read_triangle_mesh(const std::string& path, Mesh& mesh, Repair_report* repair = nullptr)
 {
   std::error_code ec;
   if(!fs::is_regular_file(path, ec))
     throw Input_error(path + ": no such file");
-  const bool read = fast_input::read_mesh_fast(path, mesh) || read_checked_polygon_mesh(path, mesh);
-  if(!read)
-    throw Input_error(path + ": cannot read a polygon mesh (unknown format, unreadable or broken file, "
-                             "or a polygon soup that is not a manifold mesh)");
-  if(is_empty(mesh) || faces(mesh).size() == 0)
-    throw Input_error(path + ": the mesh has no faces");
+  std::string note;
+  const bool read = fast_input::read_mesh_fast(path, mesh) || read_checked_polygon_mesh(path, mesh, note);
   std::size_t polygons = 0;
-  for(auto f : faces(mesh))
-    polygons += CGAL::is_triangle(halfedge(f, mesh), mesh) ? 0 : 1;
-  if(polygons > 0 && !triangulate_polygon_faces(mesh))
-    throw Input_error(path + ": cannot triangulate its polygon faces");
-  return polygons;
+  if(read && faces(mesh).size() > 0)
+  {
+    for(auto f : faces(mesh))
+      polygons += CGAL::is_triangle(halfedge(f, mesh), mesh) ? 0 : 1;
+    const bool triangulated = polygons == 0 || triangulate_polygon_faces(mesh);
+    if(repair == nullptr || (triangulated && !needs_repair(mesh)))
+    {
+      if(!triangulated)
+        throw Input_error(path + ": cannot triangulate its polygon faces");
+      return polygons;
+    }
+  }
+  else if(read)
+    throw_no_faces(path, mesh.number_of_vertices());
+  else if(repair == nullptr)
+  {
+    if(const std::size_t points = number_of_points_in(path); points > 0)
+      throw_no_faces(path, points);
+    throw Input_error(path + ": cannot read a polygon mesh (unknown format, unreadable or broken file, "
+                             "or a polygon soup that is not a manifold mesh: the tool repairs such soups "
+                             "unless --no-repair is given)" + note);
+  }
+
+  // The repair, from the file's polygon soup.
+  mesh.clear();
+  std::vector<typename Mesh::Point> points;
+  std::vector<std::vector<std::size_t> > soup;
+  if(!read_any_polygon_soup(path, points, soup, note))
+  {
+    if(const std::size_t count = number_of_points_in(path); count > 0)
+      throw_no_faces(path, count);
+    throw Input_error(path + ": cannot read a polygon mesh (unknown format, unreadable or broken file)" + note);
+  }
+  if(soup.empty())
+    throw_no_faces(path, points.size());
+  try
+  {
+    *repair = repair_polygon_soup_to_mesh(std::move(points), std::move(soup), mesh);
+  }
+  catch(const Input_error& e)
+  {
+    throw Input_error(path + ": cannot be repaired into a mesh: " + e.what());
+  }
+  catch(const std::exception& e)  // CGAL's assertions, std::bad_alloc
+  {
+    throw Input_error(path + ": cannot be repaired into a mesh (" + e.what() + ")");
+  }
+  return repair->polygons_triangulated;
 }
 
 } // namespace heat_diffusion_cli

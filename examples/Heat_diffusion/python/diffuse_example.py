@@ -22,8 +22,8 @@ path = sys.argv[1] if len(sys.argv) > 1 else "build/data/meshes/fandisk.off"
 output = sys.argv[2] if len(sys.argv) > 2 else "fandisk_diffused.png"
 
 mesh = meshio.read(path)
-V = np.ascontiguousarray(mesh.points, dtype=np.float64)  # n x 3
-F = np.ascontiguousarray(mesh.cells_dict["triangle"], dtype=np.int64)  # m x 3
+V = mesh.points  # n x 3 numbers (float32 or float64, any layout)
+F = mesh.cells_dict["triangle"]  # m x 3 integers
 
 # A_t is built once (local kernel, sigma = 0.1, t = 1), then applied k times.
 diffusion = hd.HeatDiffusion(V, F, sigma=0.1, time=1.0)

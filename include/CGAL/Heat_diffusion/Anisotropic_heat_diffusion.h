@@ -166,15 +166,13 @@ public:
   /// (linear, parallel).
   template <typename NamedParameters = parameters::Default_named_parameters>
   explicit Anisotropic_heat_diffusion(const TriangleMesh& tm, const NamedParameters& np = parameters::default_values())
-    : method_(internal::resolve_kernel_method<NamedParameters>(parameters::choose_parameter(
-          parameters::get_parameter(np, internal_np::kernel_method), Heat_kernel_method::automatic),
-          parameters::choose_parameter(parameters::get_parameter(np, internal_np::scale_invariant_kernel), false))),
-      diffusion_operator_(checked_normalization(parameters::choose_parameter(
-          parameters::get_parameter(np, internal_np::operator_normalization), Operator_normalization::balanced)))
+    : method_(internal::resolve_kernel_method(np, internal::parameter_value(np, internal_np::scale_invariant_kernel, false))),
+      diffusion_operator_(checked_normalization(
+          internal::parameter_value(np, internal_np::operator_normalization, Operator_normalization::balanced)))
   {
     using parameters::choose_parameter;
     using parameters::get_parameter;
-    const double t = checked_time(choose_parameter(get_parameter(np, internal_np::time), 1.));
+    const double t = checked_time(internal::parameter_value(np, internal_np::time, defaults::time));
     const internal::Progress progress = internal::progress_of(np);
     if constexpr(internal::can_select_spectral_kernel<NamedParameters>)
       if(method_ == Heat_kernel_method::spectral)
@@ -186,17 +184,16 @@ public:
       }
     if(method_ != Heat_kernel_method::local)
       internal::throw_invalid_input("Anisotropic_heat_diffusion: unknown kernel_method");
-    if(choose_parameter(get_parameter(np, internal_np::scale_invariant_kernel), false))
+    if(internal::parameter_value(np, internal_np::scale_invariant_kernel, false))
       internal::throw_invalid_input("Anisotropic_heat_diffusion: the scale-invariant kernel (eq. 14) needs the "
                                     "eigenvalues; use Heat_kernel_method::spectral");
-    const double sigma =
-        internal::checked_sigma(choose_parameter(get_parameter(np, internal_np::sigma), internal::default_sigma),
-                                "Anisotropic_heat_diffusion");
+    sigma_ = internal::checked_sigma(internal::parameter_value(np, internal_np::sigma, defaults::sigma),
+                                     "Anisotropic_heat_diffusion");
     ncc_ = std::make_shared<NCC>(tm, np);
     const internal::Indexed_mesh& mesh = ncc_->indexed_mesh();
     if(mesh.number_of_vertices() == 0)
       internal::throw_invalid_input("Anisotropic_heat_diffusion: the mesh is empty");
-    build_local(t, internal::assemble_heat_operators(mesh, ncc_->data(), sigma), progress);
+    build_local(t, internal::assemble_heat_operators(mesh, ncc_->data(), sigma_), progress);
   }
 
   /// Builds \f$ A_t \f$ from an existing (spectral) kernel, which must outlive this object.
@@ -224,8 +221,8 @@ public:
   Anisotropic_heat_diffusion(const Heat_kernel& kernel, double t,
                              const NamedParameters& np = parameters::default_values())
     : method_(Heat_kernel_method::spectral),
-      diffusion_operator_(checked_normalization(parameters::choose_parameter(
-          parameters::get_parameter(np, internal_np::operator_normalization), Operator_normalization::balanced)))
+      diffusion_operator_(checked_normalization(
+          internal::parameter_value(np, internal_np::operator_normalization, Operator_normalization::balanced)))
   {
     // (borrowed: an owner-less shared pointer, which never deletes the kernel)
     use_kernel(std::shared_ptr<const Heat_kernel>(std::shared_ptr<const Heat_kernel>(), &kernel));
@@ -237,6 +234,8 @@ public:
 
   /// The diffusion time t of one step.
   double time() const { return time_; }
+  /// The width `sigma` of the edge weights of the kernel (eq. 10).
+  double sigma() const { return sigma_; }
   /// The threshold \f$ \tau(t) = 0.01/(1+t) \f$.
   double threshold() const { return 0.01 / (1. + time_); }
   /// How the heat kernel was evaluated: `spectral` or `local`, never `automatic`.
@@ -358,6 +357,7 @@ private:
   {
     kernel_ = std::move(kernel);
     ncc_ = std::shared_ptr<const NCC>(kernel_, &kernel_->normal_controlled_coordinates());
+    sigma_ = kernel_->sigma();
   }
 
   void build_spectral(double t, const internal::Progress& progress)
@@ -455,7 +455,8 @@ private:
   std::shared_ptr<const Heat_kernel> kernel_;
   std::shared_ptr<const NCC> ncc_;
   Heat_kernel_method method_ = Heat_kernel_method::spectral;
-  double time_ = 1.;
+  double sigma_ = defaults::sigma;
+  double time_ = defaults::time;
   internal::Diffusion_operator diffusion_operator_;  // A_t
   std::shared_ptr<Column_major_copy> column_major_ = std::make_shared<Column_major_copy>();
   Heat_region_statistics statistics_;
@@ -500,7 +501,7 @@ void anisotropic_heat_diffusion(const TriangleMesh& tm, InputFieldMap field_in, 
                                 const NamedParameters& np = parameters::default_values())
 {
   typedef typename CGAL::GetGeomTraits<TriangleMesh, NamedParameters>::type GeomTraits;
-  const auto steps = parameters::choose_parameter(parameters::get_parameter(np, internal_np::number_of_steps), 1);
+  const auto steps = internal::parameter_value(np, internal_np::number_of_steps, defaults::number_of_steps);
   if(!(double(steps) >= 0))
     internal::throw_invalid_input("anisotropic_heat_diffusion: number_of_steps must not be negative");
   const Anisotropic_heat_diffusion<TriangleMesh, GeomTraits> diffusion(tm, np);

@@ -171,9 +171,9 @@ public:
     timings_.normal_controlled_coordinates = lap();
     using parameters::choose_parameter;
     using parameters::get_parameter;
-    sigma_ = choose_parameter(get_parameter(np, internal_np::sigma), internal::default_sigma);
-    const double requested_m = double(choose_parameter(get_parameter(np, internal_np::number_of_eigenpairs), 150));
-    scale_invariant_ = choose_parameter(get_parameter(np, internal_np::scale_invariant_kernel), false);
+    sigma_ = internal::parameter_value(np, internal_np::sigma, defaults::sigma);
+    const double requested_m = double(internal::parameter_value(np, internal_np::number_of_eigenpairs, defaults::number_of_eigenpairs));
+    scale_invariant_ = internal::parameter_value(np, internal_np::scale_invariant_kernel, false);
     const internal::Progress progress = internal::progress_of(np);
     internal::checked_sigma(sigma_, "Edge_weighted_heat_kernel");
     if(!(requested_m >= 1))
@@ -183,7 +183,10 @@ public:
     if(mesh.number_of_vertices() == 0)
       internal::throw_invalid_input("Edge_weighted_heat_kernel: the mesh is empty");
     const std::size_t n = mesh.number_of_vertices();
-    const double requested_coarse = double(choose_parameter(get_parameter(np, internal_np::coarse_vertex_count), -1));
+    // -1: not given (the automatic choice below)
+    const double requested_coarse = internal::is_given(np, internal_np::coarse_vertex_count)
+                                        ? double(internal::parameter_value(np, internal_np::coarse_vertex_count, 0))
+                                        : -1.;
     if(!std::isfinite(requested_coarse))
       internal::throw_invalid_input("Edge_weighted_heat_kernel: coarse_vertex_count must be finite");
     coarse_vertices_ = internal::coarse_vertex_count_for(requested_coarse, n);

@@ -81,7 +81,7 @@ void decompose_field(const Anisotropic_heat_diffusion<TriangleMesh, GeomTraits>&
 {
   typedef typename boost::graph_traits<TriangleMesh>::vertex_descriptor vertex_descriptor;
   const std::size_t steps_per_level = internal::checked_steps_per_level(
-      double(parameters::choose_parameter(parameters::get_parameter(np, internal_np::steps_per_level), 5)),
+      double(internal::parameter_value(np, internal_np::steps_per_level, defaults::decomposition_steps_per_level)),
       "decompose_field");
   const TriangleMesh& tm = diffusion.normal_controlled_coordinates().mesh();
   const auto index_of = [&diffusion](vertex_descriptor v) { return diffusion.vertex_index(v); };
@@ -234,9 +234,9 @@ void filter_shape(TriangleMesh& tm, const WeightRange& weights,
   typedef typename CGAL::GetGeomTraits<TriangleMesh, NamedParameters>::type GeomTraits;
   const std::vector<double> w = internal::checked_weights(weights, "filter_shape");
   const std::size_t steps_per_level = internal::checked_steps_per_level(
-      double(parameters::choose_parameter(parameters::get_parameter(np, internal_np::steps_per_level), 2)),
+      double(internal::parameter_value(np, internal_np::steps_per_level, defaults::shape_filter_steps_per_level)),
       "filter_shape");
-  const double anchor_weight = parameters::choose_parameter(parameters::get_parameter(np, internal_np::anchor_weight), 0.03);
+  const double anchor_weight = internal::parameter_value(np, internal_np::anchor_weight, defaults::shape_filter_anchor_weight);
 
   auto signature = get(CGAL::dynamic_vertex_property_t<double>(), tm);
   {

@@ -7,6 +7,7 @@
 #define CGAL_HEAT_DIFFUSION_DENOISING_H
 
 #include <CGAL/Heat_diffusion/Anisotropic_heat_diffusion.h>
+#include <CGAL/Heat_diffusion/denoising_report.h>
 #include <CGAL/Heat_diffusion/parameters.h>
 #include <CGAL/Heat_diffusion/reconstruction.h>
 #include <CGAL/Heat_diffusion/internal/Denoising/normal_filtering.h>
@@ -26,25 +27,11 @@
 #include <functional>
 #include <stdexcept>
 #include <limits>
+#include <optional>
 #include <vector>
 
 namespace CGAL {
 namespace Heat_diffusion {
-
-/// \ingroup PkgHeatDiffusionApplications
-/// The algorithm of `denoise_mesh()` (its named parameter `denoising_method`).
-enum class Denoising_method
-{
-  /// The default: anisotropic diffusion of the face normals, whose edge weights
-  /// are those of eq. 10 with the normals in place of the NCC, alternated with
-  /// vertex updates that fit the faces to the diffused normals; the noise level, the
-  /// weights and the stop adapt to the mesh (see `denoise_mesh()`).
-  normal_filtering,
-  /// The paper's pipeline (eq. 22-23): the Normal Signature diffused with the
-  /// edge-weighted heat kernel, the normals updated, the vertices reconstructed by
-  /// `reconstruct_from_normal_signature()`.
-  signature_diffusion
-};
 
 // The named parameters denoising_method, normal_sigma and displacement_limit are in parameters.h.
 
@@ -294,6 +281,9 @@ enum class Denoising_method
 ///   \cgalParamNEnd
 /// \cgalNamedParamsEnd
 ///
+/// \returns what the algorithm chose and did (`Denoising_report`): the noise level it
+///   estimated, its iterations, the stage whose result it returned, the kernel it selected.
+///
 /// \throws std::invalid_argument if a parameter is out of its range (the message names
 ///   it), or on a mesh the package cannot process (see `Normal_controlled_coordinates`),
 ///   which a signature diffusion iteration can produce only from an already degenerate
@@ -317,7 +307,7 @@ enum class Denoising_method
 /// the operator \f$ A_t \f$ (linear in n), k sparse products and one sparse Cholesky
 /// factorisation of the reconstruction (the user manual gives measured times).
 template <typename TriangleMesh, typename NamedParameters = parameters::Default_named_parameters>
-void denoise_mesh(TriangleMesh& tm, const NamedParameters& np = parameters::default_values())
+Denoising_report denoise_mesh(TriangleMesh& tm, const NamedParameters& np = parameters::default_values())
 {
   using parameters::choose_parameter;
   using parameters::get_parameter;
@@ -330,28 +320,33 @@ void denoise_mesh(TriangleMesh& tm, const NamedParameters& np = parameters::defa
 
   // Every parameter is checked before the mesh is touched.
   const Denoising_method method =
-      choose_parameter(get_parameter(np, internal_np::denoising_method), Denoising_method::normal_filtering);
+      internal::parameter_value(np, internal_np::denoising_method, Denoising_method::normal_filtering);
   if(method != Denoising_method::normal_filtering && method != Denoising_method::signature_diffusion)
     internal::throw_invalid_input("denoise_mesh: unknown denoising_method");
   const bool filtering = method == Denoising_method::normal_filtering;
-  const double iterations =
-      double(choose_parameter(get_parameter(np, CGAL::internal_np::number_of_iterations), filtering ? 40 : 2));
-  const double sigma = choose_parameter(get_parameter(np, internal_np::sigma), 1.);
-  const double time = choose_parameter(get_parameter(np, internal_np::time), 1.);
-  const double steps = double(choose_parameter(get_parameter(np, internal_np::number_of_steps), 1));
-  const double eigenpairs = double(choose_parameter(get_parameter(np, internal_np::number_of_eigenpairs), 150));
-  const double anchor_weight = choose_parameter(get_parameter(np, internal_np::anchor_weight), 0.7);
-  const Heat_kernel_method kernel_method = internal::resolve_kernel_method<NamedParameters>(
-      choose_parameter(get_parameter(np, internal_np::kernel_method), Heat_kernel_method::automatic), false);
+  const double iterations = double(internal::parameter_value(
+      np, CGAL::internal_np::number_of_iterations,
+      filtering ? defaults::denoising::normal_filtering_iterations : defaults::denoising::signature_diffusion_iterations));
+  const double sigma = internal::parameter_value(np, internal_np::sigma, defaults::denoising::sigma);
+  const double time = internal::parameter_value(np, internal_np::time, defaults::denoising::time);
+  const double steps = double(internal::parameter_value(np, internal_np::number_of_steps, defaults::denoising::number_of_steps));
+  const double eigenpairs =
+      double(internal::parameter_value(np, internal_np::number_of_eigenpairs, defaults::number_of_eigenpairs));
+  const double anchor_weight = internal::parameter_value(np, internal_np::anchor_weight, defaults::denoising::anchor_weight);
+  const Heat_kernel_method kernel_method = internal::resolve_kernel_method(np, false);
   const Operator_normalization normalization =
-      choose_parameter(get_parameter(np, internal_np::operator_normalization), Operator_normalization::balanced);
-  // -1: the automatic choice of Edge_weighted_heat_kernel; passed on as given (an integer).
-  const auto coarse_vertex_count = choose_parameter(get_parameter(np, internal_np::coarse_vertex_count), -1);
-  const double user_normal_sigma = choose_parameter(get_parameter(np, internal_np::normal_sigma), 0.);
-  const bool automatic_normal_sigma = parameters::is_default_parameter<NamedParameters, internal_np::normal_sigma_t>::value;
-  const double displacement_limit = choose_parameter(get_parameter(np, internal_np::displacement_limit), 1.);
+      internal::parameter_value(np, internal_np::operator_normalization, Operator_normalization::balanced);
+  // Left to Edge_weighted_heat_kernel where not given (its automatic choice).
+  const std::optional<long long> coarse_vertex_count =
+      internal::is_given(np, internal_np::coarse_vertex_count)
+          ? std::optional<long long>((long long)(internal::parameter_value(np, internal_np::coarse_vertex_count, 0)))
+          : std::nullopt;
+  const double user_normal_sigma = internal::parameter_value(np, internal_np::normal_sigma, 0.);
+  const bool automatic_normal_sigma = !internal::is_given(np, internal_np::normal_sigma);
+  const double displacement_limit =
+      internal::parameter_value(np, internal_np::displacement_limit, defaults::denoising::displacement_limit);
   const std::function<bool(double)> progress =
-      choose_parameter(get_parameter(np, internal_np::progress_callback), std::function<bool(double)>());
+      internal::parameter_value(np, internal_np::progress_callback, std::function<bool(double)>());
   if(!(iterations >= 0) || !std::isfinite(iterations))
     internal::throw_invalid_input("denoise_mesh: number_of_iterations must not be negative");
   internal::checked_sigma(sigma, "denoise_mesh");
@@ -365,8 +360,15 @@ void denoise_mesh(TriangleMesh& tm, const NamedParameters& np = parameters::defa
     internal::checked_positive(user_normal_sigma, "denoise_mesh", "normal_sigma");
   if(!(displacement_limit > 0))
     internal::throw_invalid_input("denoise_mesh: displacement_limit must be positive");
+  Denoising_report report;
+  report.method = method;
+  if(!filtering)
+  {
+    report.stage = Denoising_stage::signature_diffusion;
+    report.kernel_method = kernel_method;
+  }
   if(internal::number_of_listed_vertices(tm) == 0 || iterations < 1)
-    return;
+    return report;
 
   auto vpm = choose_parameter(get_parameter(np, CGAL::internal_np::vertex_point),
                               get_property_map(CGAL::vertex_point, tm));
@@ -390,7 +392,8 @@ void denoise_mesh(TriangleMesh& tm, const NamedParameters& np = parameters::defa
     options.normal_sigma = automatic_normal_sigma ? 0. : user_normal_sigma;
     options.displacement_limit = displacement_limit;
     const internal::Indexed_mesh& indexed = ncc.indexed_mesh();
-    std::vector<Eigen::Vector3d> points = internal::filter_normals(indexed, options, internal::Progress(progress));
+    std::vector<Eigen::Vector3d> points =
+        internal::filter_normals(indexed, options, internal::Progress(progress), &report);
     auto write_back = [&](const std::vector<Eigen::Vector3d>& result) {
       for(vertex_descriptor v : vertices(tm))
       {
@@ -401,12 +404,15 @@ void denoise_mesh(TriangleMesh& tm, const NamedParameters& np = parameters::defa
     };
     // A mesh that the filter leaves as it is (a clean one) keeps its own intersections.
     if(points == indexed.points)
+    {
+      report.stage = Denoising_stage::unchanged;
       write_back(points);
+    }
     else
       internal::untangle_self_intersections(tm, vpm, gt, indexed,
                                             [&](vertex_descriptor v) { return ncc.vertex_index(v); }, write_back,
                                             points);
-    return;
+    return report;
   }
 
   // The paper's pipeline (Denoising_method::signature_diffusion).
@@ -443,7 +449,9 @@ void denoise_mesh(TriangleMesh& tm, const NamedParameters& np = parameters::defa
         tm, target_signature,
         parameters::combine(mesh_parameters, CGAL::parameters::vertex_normal_map(target_normals),
                             parameters::anchor_weight(anchor_weight)));
+    report.iterations = iteration + 1;
   }
+  return report;
 }
 
 } // namespace Heat_diffusion

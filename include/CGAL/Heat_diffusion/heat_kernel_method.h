@@ -57,15 +57,15 @@ inline Heat_kernel_method choose_kernel_method(Heat_kernel_method requested, boo
   return eigenpairs_requested ? Heat_kernel_method::spectral : Heat_kernel_method::local;
 }
 
-// The method Heat_kernel_method::automatic stands for, given the named parameters
-// `NamedParameters` of the call: spectral if they ask for eigenpairs, else local.
+// The method that the named parameters `np` of a call select: their `kernel_method`, and
+// for Heat_kernel_method::automatic (the default), spectral if they ask for eigenpairs,
+// else local.
 template <typename NamedParameters>
-Heat_kernel_method resolve_kernel_method(Heat_kernel_method requested, bool scale_invariant)
+Heat_kernel_method resolve_kernel_method(const NamedParameters& np, bool scale_invariant)
 {
-  return choose_kernel_method(
-      requested, !parameters::is_default_parameter<NamedParameters, internal_np::number_of_eigenpairs_t>::value ||
-                     !parameters::is_default_parameter<NamedParameters, internal_np::coarse_vertex_count_t>::value ||
-                     scale_invariant);
+  return choose_kernel_method(parameter_value(np, internal_np::kernel_method, Heat_kernel_method::automatic),
+                              is_given(np, internal_np::number_of_eigenpairs) ||
+                                  is_given(np, internal_np::coarse_vertex_count) || scale_invariant);
 }
 
 // Whether named parameters of type `NamedParameters` can select the spectral kernel:

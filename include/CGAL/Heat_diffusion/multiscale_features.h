@@ -87,8 +87,7 @@ detect_multiscale_features(const Anisotropic_heat_diffusion<TriangleMesh, GeomTr
   typedef typename boost::graph_traits<TriangleMesh>::vertex_descriptor vertex_descriptor;
   const char* const function = "detect_multiscale_features";
   const double c = internal::checked_feature_threshold(
-      parameters::choose_parameter(parameters::get_parameter(np, internal_np::feature_threshold),
-                                   internal::default_feature_threshold),
+      internal::parameter_value(np, internal_np::feature_threshold, defaults::feature_threshold),
       function);
 
   const TriangleMesh& tm = diffusion.normal_controlled_coordinates().mesh();
@@ -185,7 +184,7 @@ detect_multiscale_features(const TriangleMesh& tm, const VertexFieldMap& field, 
   typedef typename boost::graph_traits<TriangleMesh>::vertex_descriptor vertex_descriptor;
   typedef typename CGAL::GetGeomTraits<TriangleMesh, NamedParameters>::type GeomTraits;
   const char* const function = "detect_multiscale_features";
-  const auto steps = parameters::choose_parameter(parameters::get_parameter(np, internal_np::number_of_steps), 0);
+  const auto steps = internal::parameter_value(np, internal_np::number_of_steps, 0);
   if(!(double(steps) >= 0))
     internal::throw_invalid_input("detect_multiscale_features: number_of_steps must not be negative");
 
@@ -202,8 +201,7 @@ detect_multiscale_features(const TriangleMesh& tm, const VertexFieldMap& field, 
   }
 
   const double c = internal::checked_feature_threshold(
-      parameters::choose_parameter(parameters::get_parameter(np, internal_np::feature_threshold),
-                                   internal::default_feature_threshold),
+      internal::parameter_value(np, internal_np::feature_threshold, defaults::feature_threshold),
       function);
   // The user's numbering or the rank in vertices(tm), without gaps where a
   // Surface_mesh has removed vertices.

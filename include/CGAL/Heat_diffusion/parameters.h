@@ -6,8 +6,11 @@
 #ifndef CGAL_HEAT_DIFFUSION_PARAMETERS_H
 #define CGAL_HEAT_DIFFUSION_PARAMETERS_H
 
+#include <CGAL/Heat_diffusion/parameter_defaults.h>
+
 #include <CGAL/Named_function_parameters.h>
 
+#include <optional>
 #include <type_traits>
 
 namespace CGAL {
@@ -57,11 +60,25 @@ constexpr bool is_number = std::is_arithmetic<K>::value && !std::is_same<K, bool
 template <typename K>
 constexpr bool is_count = std::is_integral<K>::value && !std::is_same<K, bool>::value;
 
-// check_sigma<K>(), ...: the static_assert on the value type of each parameter.
+// The type of a value, or of the value a std::optional may hold (an empty optional is
+// a parameter that was not given: see parameters::sigma()).
+template <typename V>
+struct Given_value
+{
+  typedef V type;
+};
+template <typename V>
+struct Given_value<std::optional<V> >
+{
+  typedef V type;
+};
+
+// check_sigma<V>(), ...: the static_assert on the value type K of each parameter.
 #define CGAL_HEAT_DIFFUSION_CHECK(N, NAME, CONDITION, WHAT)                                            \
-  template <typename K>                                                                               \
+  template <typename V>                                                                               \
   constexpr void check_##NAME()                                                                       \
   {                                                                                                   \
+    typedef typename Given_value<V>::type K;                                                          \
     static_assert(CONDITION, "CGAL::Heat_diffusion::parameters::" #NAME ": the value must be " WHAT); \
   }
 CGAL_HEAT_DIFFUSION_PARAMETER_LIST(CGAL_HEAT_DIFFUSION_CHECK)
@@ -137,6 +154,13 @@ namespace Heat_diffusion {
 /// `CGAL::Named_function_parameters`, which CGAL's functions accept (they ignore the
 /// package's parameters). A value of the wrong type, such as `number_of_steps(2.7)`,
 /// is a compile-time error that names the parameter.
+///
+/// Every parameter of this namespace may also be given as a `std::optional` of its
+/// value type: an empty optional is the same as leaving the parameter out, so that a
+/// program that knows only at run time which parameters its user set (a command-line
+/// tool, a language binding) passes one pack of one type and gets, for the rest,
+/// exactly the function's own defaults, adaptive ones included:
+/// `parameters::sigma(std::optional<double>()).time(std::optional<double>(2.))` is `parameters::time(2.)`.
 namespace parameters {
 
 /// \cond SKIP_IN_MANUAL
@@ -264,6 +288,59 @@ auto combine(const NP1& np1, const NP2& np2, const NPs&... rest)
 }
 
 } // namespace parameters
+
+/// \cond SKIP_IN_MANUAL
+namespace internal {
+
+template <typename V>
+constexpr bool is_optional = false;
+template <typename V>
+constexpr bool is_optional<std::optional<V> > = true;
+
+// Whether `np` gives the parameter `tag`: it is in the pack, and not as an empty
+// std::optional. The functions whose default is not a value (an automatic choice)
+// decide with this at run time.
+template <typename NamedParameters, typename Tag>
+bool is_given(const NamedParameters& np, Tag tag)
+{
+  if constexpr(parameters::is_default_parameter<NamedParameters, Tag>::value)
+    return false;
+  else
+  {
+    const auto& value = parameters::get_parameter(np, tag);
+    if constexpr(is_optional<std::decay_t<decltype(value)> >)
+      return value.has_value();
+    else
+      return true;
+  }
+}
+
+// The value of the parameter `tag` in `np`, or `default_value` where it is not given
+// (is_given()): parameters::choose_parameter() that also opens a std::optional. An empty
+// std::optional<T> gives T(default_value): a default that T cannot hold (a negative one
+// for an unsigned T) is for the caller to read with is_given() instead.
+template <typename NamedParameters, typename Tag, typename Default>
+auto parameter_value(const NamedParameters& np, Tag tag, const Default& default_value)
+{
+  if constexpr(parameters::is_default_parameter<NamedParameters, Tag>::value)
+    return default_value;
+  else
+  {
+    const auto& value = parameters::get_parameter(np, tag);
+    typedef std::decay_t<decltype(value)> Value;
+    if constexpr(is_optional<Value>)  // in the type of the value given, as when it is given plainly
+    {
+      typedef typename Value::value_type Result;
+      return value ? Result(*value) : Result(default_value);
+    }
+    else
+      return Value(value);
+  }
+}
+
+} // namespace internal
+/// \endcond
+
 } // namespace Heat_diffusion
 } // namespace CGAL
 

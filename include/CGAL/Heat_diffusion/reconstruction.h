@@ -98,7 +98,7 @@ void reconstruct_from_normal_signature(TriangleMesh& tm, const VertexNSMap& ns_m
                                                              Area_weighted_vertex_normals>::type Rule;
 
   const double anchor_weight = internal::checked_positive(
-      choose_parameter(get_parameter(np, internal_np::anchor_weight), 1.), "reconstruct_from_normal_signature",
+      internal::parameter_value(np, internal_np::anchor_weight, defaults::reconstruction_anchor_weight), "reconstruct_from_normal_signature",
       "anchor_weight");
 
   auto vpm = choose_parameter(get_parameter(np, CGAL::internal_np::vertex_point),

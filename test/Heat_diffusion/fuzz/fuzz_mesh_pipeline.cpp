@@ -5,7 +5,8 @@
 // if a line starts with "v ", OFF otherwise), through
 // - the tool's fast reader, compared with its checked reading (the pre-checks, CGAL's
 //   soup reader, the face index check) and, for OFF, with CGAL::IO::read_OFF;
-// - the tool's whole reading, read_triangle_mesh(), on the bytes as a file;
+// - the tool's whole reading, read_triangle_mesh(), on the bytes as a file, strict and
+//   with the repair it applies by default;
 // - for OFF, the API user's paths: CGAL::IO::read_OFF into a Surface_mesh, and the
 //   documented repair of a soup (repair_polygon_soup, orient_polygon_soup);
 // then NCC, the reconstruction, the default denoising, a small heat kernel (m <= 10),
@@ -282,6 +283,31 @@ extern "C" int LLVMFuzzerTestOneInput(const std::uint8_t* data, std::size_t size
     }
     if(read && mesh.number_of_faces() <= maximum_faces)
       run_package(mesh, p);
+  }
+  // The same with the repair the tool applies by default (CGAL's repair functions): a
+  // mesh, or an Input_error; a repair renumbers the vertices only as its origin says.
+  {
+    Mesh mesh;
+    heat_diffusion_cli::Repair_report repair;
+    bool read = false;
+    try
+    {
+      heat_diffusion_cli::read_triangle_mesh(path, mesh, &repair);
+      read = true;
+    }
+    catch(const heat_diffusion_cli::Input_error&)
+    {
+    }
+    catch(const std::exception& e)
+    {
+      bug(std::string("the repairing read threw something other than an Input_error: ") + e.what());
+    }
+    if(read && repair.changed())  // (a mesh that needs no repair is the strict reading's, run above)
+    {
+      require(repair.origin.size() == mesh.number_of_vertices(), "the repair's origin misses vertices");
+      if(mesh.number_of_faces() <= maximum_faces)
+        run_package(mesh, p);
+    }
   }
   if(extension != ".off")
     return 0;

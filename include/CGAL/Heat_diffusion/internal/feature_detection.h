@@ -59,10 +59,6 @@ inline Vertex_adjacency make_vertex_adjacency(const Indexed_mesh& mesh)
   return Vertex_adjacency{mesh.fan_begin, mesh.fan};
 }
 
-// The default threshold c of the criterion (named parameter `feature_threshold`): the
-// paper's value.
-constexpr double default_feature_threshold = 0.8;
-
 inline double checked_feature_threshold(double c, const char* function)
 {
   if(!(c >= 0. && c <= 1.))

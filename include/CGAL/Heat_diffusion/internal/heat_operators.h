@@ -31,10 +31,6 @@ struct Heat_operators
   double area_scale = 1.;                 // rescaled area = area_scale * area of the normalised frame
 };
 
-// The default width sigma of the edge weights (named parameter `sigma`), for either
-// kernel method.
-constexpr double default_sigma = 0.1;
-
 // The factor beta_ij = (B_ii + B_jj) / 2 of the scale-invariant kernel (eq. 14), from
 // the diagonal of B.
 inline double scale_invariant_factor(const Eigen::VectorXd& mass_diagonal, std::size_t i, std::size_t j)

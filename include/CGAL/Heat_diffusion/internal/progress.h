@@ -67,8 +67,7 @@ private:
 template <typename NamedParameters>
 Progress progress_of(const NamedParameters& np)
 {
-  return Progress(parameters::choose_parameter(parameters::get_parameter(np, internal_np::progress_callback),
-                                               std::function<bool(double)>()));
+  return Progress(internal::parameter_value(np, internal_np::progress_callback, std::function<bool(double)>()));
 }
 
 // `np` with `progress` (a part of the caller's) as its progress callback.

@@ -10,6 +10,7 @@
 #ifndef CGAL_HEAT_DIFFUSION_INTERNAL_DENOISING_NORMAL_FILTERING_H
 #define CGAL_HEAT_DIFFUSION_INTERNAL_DENOISING_NORMAL_FILTERING_H
 
+#include <CGAL/Heat_diffusion/denoising_report.h>
 #include <CGAL/Heat_diffusion/internal/Denoising/face_adjacency.h>
 #include <CGAL/Heat_diffusion/internal/Denoising/needle_surface_fit.h>
 #include <CGAL/Heat_diffusion/internal/Denoising/noise_level.h>
@@ -203,19 +204,32 @@ inline std::size_t final_relaxation_steps(double noise_in_mean_edges)
 // normal_sigma, that width is used until the displacement limit.
 // A mesh without measurable noise is left unchanged, and so is a curved one whose
 // roughness after 1 is as large as its noise estimate (the estimate was all shape).
+// `report`, if given, receives the noise level, the iterations and the stage returned.
 inline std::vector<Eigen::Vector3d> filter_normals(const Indexed_mesh& mesh, const Normal_filtering_options& options,
-                                                   const Progress& reporter)
+                                                   const Progress& reporter, Denoising_report* report = nullptr)
 {
   const std::size_t n = mesh.number_of_vertices();
   const Face_adjacency adjacency = make_face_adjacency(mesh);
   const double noise = plane_fit_noise_level(mesh, adjacency, mesh.points);
   std::vector<Eigen::Vector3d> points = mesh.points;
+  std::size_t done = 0;
+  auto record = [&](Denoising_stage stage) {
+    if(report)
+    {
+      report->method = Denoising_method::normal_filtering;
+      report->noise_level = std::isfinite(noise) && noise > 0 ? noise / mean_edge_length(mesh) : 0.;
+      report->iterations = done;
+      report->stage = stage;
+    }
+  };
   if(!(noise > 0) || !std::isfinite(noise) || options.iterations == 0)
+  {
+    record(Denoising_stage::unchanged);
     return points;
+  }
 
   std::vector<Eigen::Vector3d> face_normals, centroids, face_scratch, vertex_scratch;
   std::vector<double> areas;
-  std::size_t done = 0;
   auto displacement_of = [&](const std::vector<Eigen::Vector3d>& moved) {
     double squares = 0;
     for(std::size_t i = 0; i < n; ++i)
@@ -277,6 +291,7 @@ inline std::vector<Eigen::Vector3d> filter_normals(const Indexed_mesh& mesh, con
   {
     run_to_limit(std::vector<double>(mesh.triangles.size(), options.normal_sigma), options.displacement_limit * noise,
                  false);
+    record(Denoising_stage::user_normal_sigma);
     return points;
   }
   // The cotangent flow of the input: one symbolic factorisation for all its smoothings.
@@ -284,8 +299,8 @@ inline std::vector<Eigen::Vector3d> filter_normals(const Indexed_mesh& mesh, con
   // The result of a normal filter in `points`, or instead, where the filter has eroded
   // the shape (see volume_tolerance), the input smoothed by the cotangent flow until
   // what it removes is no longer white noise (smooth_until_residual_is_correlated()),
-  // rescaled to the input's volume (unless the flow fails).
-  auto unless_eroded = [&]() {
+  // rescaled to the input's volume (unless the flow fails). Records `stage`, or the flow.
+  auto unless_eroded = [&](Denoising_stage stage) {
     std::vector<Eigen::Vector3d> smoothed;
     double time = 0;
     if(options.displacement_limit <= erosion_check_limit &&
@@ -294,7 +309,9 @@ inline std::vector<Eigen::Vector3d> filter_normals(const Indexed_mesh& mesh, con
     {
       restore_component_volumes(mesh, mesh.points, smoothed);
       points.swap(smoothed);
+      stage = Denoising_stage::cotangent_flow;
     }
+    record(stage);
   };
   const std::vector<double> widths = crease_preserving_widths(mesh, adjacency, noise, flow);
   run_to_limit(widths, options.displacement_limit * noise, true);
@@ -316,7 +333,7 @@ inline std::vector<Eigen::Vector3d> filter_normals(const Indexed_mesh& mesh, con
     for(std::size_t it = first_phase; it < options.iterations; ++it)
       if(!iterate_unless_shrinking(widths, move) || move < 1e-4 * noise)  // shrinking, or converged
         break;
-    unless_eroded();
+    unless_eroded(Denoising_stage::piecewise_flat);
     return points;
   }
   // The noise level of the coarse iterations' stop (meshes of needles), without the
@@ -342,7 +359,10 @@ inline std::vector<Eigen::Vector3d> filter_normals(const Indexed_mesh& mesh, con
   // of MAD on rotor_small), while noise keeps rho below 0.6 on the benchmark's twelve
   // meshes from 0.1 mean edge length on, and below 0.87 on eight of them at 0.02.
   if(detail_free == 0)
+  {
+    record(Denoising_stage::unchanged);
     return mesh.points;
+  }
   // The same subtraction for the noise level of second differences (the stop of the
   // small iterations below): the level of the crease-preserving phase's result is the
   // detail that this estimate counts. (Measured here: the curved path below starts
@@ -357,7 +377,10 @@ inline std::vector<Eigen::Vector3d> filter_normals(const Indexed_mesh& mesh, con
   if(needle_factor >= 1 &&
      smooth_needle_mesh(mesh, adjacency, noise, needles, flow,
                         [&](const std::vector<Eigen::Vector3d>& copy) { return shrinkage_of(copy) > 0; }, points))
+  {
+    record(Denoising_stage::needle_copy);
     return points;
+  }
   if(std::vector<Eigen::Vector3d> copy; needle_copy(needles, flow, copy))
   {
     std::vector<Eigen::Vector3d> copy_normals, copy_centroids, fitted;
@@ -436,7 +459,7 @@ inline std::vector<Eigen::Vector3d> filter_normals(const Indexed_mesh& mesh, con
       relax_tangentially(mesh, adjacency, curved_tangential_weight, points, previous, normals);
     if(needle_weight == 0)
     {
-      unless_eroded();
+      unless_eroded(Denoising_stage::curved);
       return points;
     }
     small_steps.swap(points);
@@ -446,7 +469,7 @@ inline std::vector<Eigen::Vector3d> filter_normals(const Indexed_mesh& mesh, con
   if(!small_steps.empty())
     for(std::size_t i = 0; i < n; ++i)
       points[i] = needle_weight * points[i] + (1. - needle_weight) * small_steps[i];
-  unless_eroded();
+  unless_eroded(Denoising_stage::needle_fit);
   return points;
 }
 
