@@ -30,13 +30,13 @@ typedef HD::Edge_weighted_heat_kernel<Mesh> Heat_kernel;
 typedef HD::Anisotropic_heat_diffusion<Mesh> Diffusion;
 
 // The named parameters of the kernel and the diffusion: the options given, the others
-// as empty optionals, which the library reads as not given (its defaults apply). The
-// kernel is the one the tool resolved by the library's rule (the same as the library's
-// own resolution of these parameters), so that the stages it times are those that run.
+// as empty optionals, which the library reads as not given (its defaults apply; the
+// kernel it then selects is o.method, which the tool resolved by the library's own rule
+// to time the stages that run).
 inline auto diffusion_parameters(const Diffusion_options& o, Progress_bar& progress)
 {
   return HD::parameters::combine(
-      HD::parameters::sigma(o.sigma), HD::parameters::time(o.time), HD::parameters::kernel_method(o.method),
+      HD::parameters::sigma(o.sigma), HD::parameters::time(o.time), HD::parameters::kernel_method(o.kernel),
       HD::parameters::number_of_eigenpairs(o.eigenpairs),
       HD::parameters::scale_invariant_kernel(o.scale_invariant ? std::optional<bool>(true) : std::nullopt),
       HD::parameters::operator_normalization(o.normalization), HD::parameters::coarse_vertex_count(o.coarse),
