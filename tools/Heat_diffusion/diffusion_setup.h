@@ -127,11 +127,12 @@ inline std::string json_string_list(const std::vector<std::string>& names)
 }
 
 // The diffusion parameters of a JSON summary, as used: "given", the named parameters
-// the user set (those of the diffusion, then the subcommand's own, `own_given`); sigma, time, the kernel and the normalization read from the diffusion
-// that ran, when there is one (else the values given or the library's defaults, which
-// are then what the library used); for the spectral kernel, the eigenpairs and the
-// coarse level ({"vertex_count": the size used, 0 for none; "automatic": whether the
-// package chose it}), from the kernel, else by the package's own rule.
+// the user set (those of the diffusion, then the subcommand's own, `own_given`); sigma,
+// time, the kernel and the normalization read from the diffusion that ran, when there is
+// one (else the values given or the library's defaults, which are then what the library
+// used); for the spectral kernel, the eigenpairs and the coarse level ({"vertex_count":
+// the size used, 0 for none; "automatic": whether the package chose it}), from the
+// kernel, else by the package's own rule.
 inline void add_diffusion_json(Json_object& summary, const Diffusion_options& o, std::size_t n,
                                const Heat_kernel* kernel, const Diffusion* diffusion = nullptr,
                                std::vector<std::string> own_given = {}, double sigma_default = HD::defaults::sigma,

@@ -166,7 +166,8 @@ public:
   /// (linear, parallel).
   template <typename NamedParameters = parameters::Default_named_parameters>
   explicit Anisotropic_heat_diffusion(const TriangleMesh& tm, const NamedParameters& np = parameters::default_values())
-    : method_(internal::resolve_kernel_method(np, internal::parameter_value(np, internal_np::scale_invariant_kernel, false))),
+    : method_(internal::resolve_kernel_method(
+          np, internal::parameter_value(np, internal_np::scale_invariant_kernel, false))),
       diffusion_operator_(checked_normalization(
           internal::parameter_value(np, internal_np::operator_normalization, Operator_normalization::balanced)))
   {

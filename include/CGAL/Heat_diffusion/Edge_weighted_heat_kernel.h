@@ -172,7 +172,8 @@ public:
     using parameters::choose_parameter;
     using parameters::get_parameter;
     sigma_ = internal::parameter_value(np, internal_np::sigma, defaults::sigma);
-    const double requested_m = double(internal::parameter_value(np, internal_np::number_of_eigenpairs, defaults::number_of_eigenpairs));
+    const double requested_m =
+        double(internal::parameter_value(np, internal_np::number_of_eigenpairs, defaults::number_of_eigenpairs));
     scale_invariant_ = internal::parameter_value(np, internal_np::scale_invariant_kernel, false);
     const internal::Progress progress = internal::progress_of(np);
     internal::checked_sigma(sigma_, "Edge_weighted_heat_kernel");

@@ -329,10 +329,12 @@ Denoising_report denoise_mesh(TriangleMesh& tm, const NamedParameters& np = para
       filtering ? defaults::denoising::normal_filtering_iterations : defaults::denoising::signature_diffusion_iterations));
   const double sigma = internal::parameter_value(np, internal_np::sigma, defaults::denoising::sigma);
   const double time = internal::parameter_value(np, internal_np::time, defaults::denoising::time);
-  const double steps = double(internal::parameter_value(np, internal_np::number_of_steps, defaults::denoising::number_of_steps));
+  const double steps =
+      double(internal::parameter_value(np, internal_np::number_of_steps, defaults::denoising::number_of_steps));
   const double eigenpairs =
       double(internal::parameter_value(np, internal_np::number_of_eigenpairs, defaults::number_of_eigenpairs));
-  const double anchor_weight = internal::parameter_value(np, internal_np::anchor_weight, defaults::denoising::anchor_weight);
+  const double anchor_weight =
+      internal::parameter_value(np, internal_np::anchor_weight, defaults::denoising::anchor_weight);
   const Heat_kernel_method kernel_method = internal::resolve_kernel_method(np, false);
   const Operator_normalization normalization =
       internal::parameter_value(np, internal_np::operator_normalization, Operator_normalization::balanced);
