@@ -1328,10 +1328,11 @@ PYBIND11_MODULE(cgal_heat_diffusion, module)
              "(V2, F2, origin): the mesh (V, F) repaired with CGAL's repair functions, as the tool repairs its\n"
              "input: duplicate points merged, degenerate and duplicate faces removed, faces reoriented to agree\n"
              "with their neighbours, non-manifold vertices split, isolated vertices and faces of zero area\n"
-             "removed. origin[i] is the row of V that row i of V2 comes from (the first row at its position), so\n"
-             "that a result on V2 is given per row of V by result[inverse] or np.bincount(origin, ...). A mesh\n"
-             "that needs no repair comes back as it is (origin = arange(n)). The other functions do not repair:\n"
-             "they refuse such a mesh with a ValueError that names this function.");
+             "removed. origin[i] is the row of V that row i of V2 comes from (the first row at its position): a\n"
+             "per-vertex result r on V2 is, per row of V, out = np.full(len(V), np.nan); out[origin] = r (a split\n"
+             "row takes one of its copies' values, a removed row none). A mesh that needs no repair comes back as\n"
+             "it is (origin = arange(n)). The other functions do not repair: they refuse such a mesh with a\n"
+             "ValueError that names this function.");
   // The package's refusals of what repair() repairs name it.
   py::register_exception_translator([](std::exception_ptr p) {
     try
