@@ -115,11 +115,18 @@ struct Repair_report
 // mesh: a vertex is non-manifold when the circulation around it crosses the border more
 // than once (its fans are linked through their border halfedges), or when it misses some
 // of the halfedges that point to it (Polygon_mesh_processing::is_non_manifold_vertex()
-// asks the whole mesh, for each vertex).
+// asks the whole mesh, for each vertex). A mesh with a non-finite coordinate is left to
+// the package, which refuses it (the exact predicates cannot take it).
 template <typename Mesh>
 bool needs_repair(const Mesh& mesh)
 {
   namespace PMP = CGAL::Polygon_mesh_processing;
+  for(auto v : vertices(mesh))
+  {
+    const auto& p = mesh.point(v);
+    if(!std::isfinite(p.x()) || !std::isfinite(p.y()) || !std::isfinite(p.z()))
+      return false;
+  }
   std::vector<std::size_t> incoming(num_vertices(mesh), 0);
   for(auto h : halfedges(mesh))
     ++incoming[std::size_t(target(h, mesh))];
@@ -183,6 +190,9 @@ Repair_report repair_polygon_soup_to_mesh(std::vector<typename Mesh::Point> poin
   Repair_report report;
   const std::vector<Point> input_points = points;
   const std::size_t input_polygons = polygons.size();
+  for(std::size_t i = 0; i < points.size(); ++i)  // (CGAL's exact predicates cannot take them)
+    if(!std::isfinite(points[i].x()) || !std::isfinite(points[i].y()) || !std::isfinite(points[i].z()))
+      throw Input_error("vertex " + std::to_string(i) + " has a non-finite coordinate");
 
   // The first input point at each position: where every vertex of the result comes from.
   std::map<std::array<double, 3>, std::size_t> first_at;
