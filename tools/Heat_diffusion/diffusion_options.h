@@ -77,7 +77,6 @@ struct Diffusion_options
   // The kernel the library selects (never automatic): by the library's rule for
   // Heat_kernel_method::automatic, for the stages the tool times and reports.
   HD::Heat_kernel_method method = HD::Heat_kernel_method::local;
-  bool automatic_method = true;  // --kernel not given, or automatic
   std::optional<HD::Operator_normalization> normalization;
   bool builds_operator = true;  // the subcommand builds A_t (and so has --normalization)
   std::optional<std::size_t> eigenpairs;
@@ -91,6 +90,8 @@ struct Diffusion_options
   bool quiet = false;
 
   bool local() const { return method == HD::Heat_kernel_method::local; }
+  // Whether the library chose the kernel: --kernel not given, or automatic.
+  bool automatic_method() const { return !kernel || *kernel == HD::Heat_kernel_method::automatic; }
   // The time of one step, for the calls that take it as an argument (A_t from a spectral
   // kernel): the one given, or the library's default.
   double time_or_default() const { return time.value_or(HD::defaults::time); }
@@ -164,7 +165,6 @@ inline Diffusion_options parse_diffusion_options(const Arguments& args, const Di
   const std::string kernel = args.value("--kernel", "automatic");
   if(kernel != "spectral" && kernel != "local" && kernel != "automatic")
     throw Usage_error("--kernel must be 'automatic', 'spectral' or 'local', not '" + kernel + "'");
-  o.automatic_method = kernel == "automatic";
   const HD::Heat_kernel_method requested = kernel == "local"      ? HD::Heat_kernel_method::local
                                            : kernel == "spectral" ? HD::Heat_kernel_method::spectral
                                                                   : HD::Heat_kernel_method::automatic;

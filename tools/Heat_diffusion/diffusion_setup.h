@@ -147,7 +147,7 @@ inline void add_diffusion_json(Json_object& summary, const Diffusion_options& o,
   summary.string("kernel", diffusion ? (diffusion->kernel_method() == HD::Heat_kernel_method::local ? "local"
                                                                                                       : "spectral")
                                      : o.kernel_name());
-  summary.boolean("kernel_automatic", o.automatic_method);
+  summary.boolean("kernel_automatic", o.automatic_method());
   if(o.builds_operator)
   {
     const HD::Operator_normalization normalization =
