@@ -2,7 +2,7 @@
 // SPDX-License-Identifier: LGPL-3.0-or-later
 //
 // Shared by the tests and the benchmarks, so that both measure the same way: the mean
-// edge length, seeded noise along the normals, 2-rings and the re-detection of
+// edge length, seeded noise along the normals (Gaussian on every vertex, or impulsive), 2-rings and the re-detection of
 // features within them, and the bilateral denoising baseline.
 
 #ifndef CGAL_HEAT_DIFFUSION_MESH_MEASURES_H
@@ -16,6 +16,7 @@
 #include <cstddef>
 #include <random>
 #include <set>
+#include <utility>
 #include <vector>
 
 namespace test_support {
@@ -43,6 +44,32 @@ void add_normal_noise(Mesh& mesh, double relative_sigma, unsigned seed)
   std::normal_distribution<double> gaussian(0., sigma);
   for(auto v : mesh.vertices())
     mesh.point(v) = mesh.point(v) + gaussian(generator) * normals[v];
+  mesh.remove_property_map(normals);
+}
+
+// Impulsive noise: moves a random `fraction` of the vertices (chosen without
+// repetition, seeded) along their normals by Gaussian noise of standard deviation
+// `relative_sigma` times the mean edge length, and leaves the others where they are.
+template <typename Mesh>
+void add_impulsive_noise(Mesh& mesh, double fraction, double relative_sigma, unsigned seed)
+{
+  typedef typename CGAL::Kernel_traits<typename Mesh::Point>::Kernel K;
+  const double sigma = relative_sigma * mean_edge_length(mesh);
+  auto normals = mesh.template add_property_map<typename Mesh::Vertex_index, typename K::Vector_3>("v:noise_normal").first;
+  CGAL::Polygon_mesh_processing::compute_vertex_normals(mesh, normals);
+  std::vector<typename Mesh::Vertex_index> chosen(mesh.vertices().begin(), mesh.vertices().end());
+  std::mt19937 generator(seed);
+  // A Fisher-Yates prefix of the vertices: the same choice on every platform
+  // (std::shuffle's algorithm is not specified).
+  const std::size_t count = std::size_t(std::lround(fraction * double(chosen.size())));
+  for(std::size_t i = 0; i < count && i + 1 < chosen.size(); ++i)
+  {
+    const std::size_t j = i + std::size_t(generator() % (chosen.size() - i));
+    std::swap(chosen[i], chosen[j]);
+  }
+  std::normal_distribution<double> gaussian(0., sigma);
+  for(std::size_t i = 0; i < count && i < chosen.size(); ++i)
+    mesh.point(chosen[i]) = mesh.point(chosen[i]) + gaussian(generator) * normals[chosen[i]];
   mesh.remove_property_map(normals);
 }
 

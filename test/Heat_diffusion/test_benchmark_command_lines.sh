@@ -12,7 +12,7 @@ source "$(dirname "$0")/command_line_checks.sh"
 rm -rf "$work" && mkdir -p "$work" || exit 1
 
 for b in benchmark_heat_diffusion benchmark_denoising benchmark_scale_curve benchmark_local_kernel \
-         benchmark_features benchmark_mesh_input; do
+         benchmark_features benchmark_mesh_input benchmark_kernel_accuracy; do
   expect 0 "^usage: $b" -- "$bin/$b" --help
   expect 0 "^usage: $b" -- "$bin/$b" -h
   expect 2 "unknown option --bogus" -- "$bin/$b" --bogus
@@ -31,8 +31,12 @@ expect 2 '--min-level 3 is above --max-level 1' -- "$bin/benchmark_scale_curve" 
 expect 2 '--sigmas and --steps are settings of --shape-filter' -- "$bin/benchmark_features" --sigmas 0.5
 expect 2 '--steps must be a whole number' -- "$bin/benchmark_features" --shape-filter --steps 2.5
 expect 2 '--meshes needs at least one mesh' -- "$bin/benchmark_features" --meshes ,
+expect 2 '--meshes needs at least one mesh' -- "$bin/benchmark_kernel_accuracy" --meshes ,
+expect 2 "--times must be a number > 0 and <= 1000, not '0'" -- "$bin/benchmark_kernel_accuracy" --times 1,0
 expect 2 "--noise must be a number > 0 and <= 10, not 'abc'" -- "$bin/benchmark_denoising" --noise abc
 expect 2 "--noise must be a number > 0" -- "$bin/benchmark_denoising" --noise 0.3 --noise -0.1
+expect 2 "--half takes tune or check, not 'both'" -- "$bin/benchmark_denoising" --half both
+expect 2 "--gaussian and --impulsive exclude each other" -- "$bin/benchmark_denoising" --gaussian --impulsive
 # benchmark_mesh_input checks its TOOL and DIR before it writes and reads its meshes
 expect 2 "TOOL '$work/no_such_tool' is not an executable file" -- \
   "$bin/benchmark_mesh_input" "$work/no_such_tool" --dir "$work" --levels 0
