@@ -238,6 +238,38 @@ inline void renumber_vertices(Indexed_mesh& mesh, const std::vector<std::size_t>
   mesh.fan_is_closed = std::move(fan_is_closed);
 }
 
+// Moves mesh.points, in user coordinates within the box [lo, hi], to the normalised
+// frame of Indexed_mesh, and sets center, scale and scale_exponent.
+inline void set_normalised_frame(Indexed_mesh& mesh, const Eigen::Vector3d& lo, const Eigen::Vector3d& hi)
+{
+  // Halves first, so that coordinates near the largest double do not overflow.
+  mesh.center = 0.5 * lo + 0.5 * hi;
+  const Eigen::Vector3d half_extent = 0.5 * hi - 0.5 * lo;
+  const double largest_half_extent = half_extent.maxCoeff();
+  if(largest_half_extent > 0)
+  {
+    // The half diagonal itself can overflow (half extents of 1.7e308), so its
+    // exponent is that of the largest half extent plus that of the diagonal of the
+    // box scaled by a power of two to that extent.
+    int exponent = 0, diagonal_exponent = 0;
+    std::frexp(largest_half_extent, &exponent);
+    // std::ldexp scales exactly, without overflow for tiny (subnormal) extents.
+    auto times_power_of_two = [](const Eigen::Vector3d& x, int e) {
+      return Eigen::Vector3d(std::ldexp(x.x(), e), std::ldexp(x.y(), e), std::ldexp(x.z(), e));
+    };
+    std::frexp(times_power_of_two(half_extent, -exponent).norm(), &diagonal_exponent);
+    exponent += diagonal_exponent;  // half_diagonal in [2^(e-1), 2^e)
+    for(Eigen::Vector3d& p : mesh.points)
+      p = times_power_of_two(0.5 * p - 0.5 * mesh.center, -exponent);  // = (p - center) * scale
+    // diagonal * scale = half_diagonal * 2^-e, in [0.5, 1)
+    mesh.scale_exponent = -1 - exponent;
+    mesh.scale = std::ldexp(1., mesh.scale_exponent);
+  }
+  else
+    for(Eigen::Vector3d& p : mesh.points)
+      p.setZero();
+}
+
 // Builds the indexed copy of `tm`, and rejects what the package cannot process with
 // an exception that names the element and the problem: a non-triangle face, a
 // non-finite coordinate, a zero-area face, an isolated vertex, a non-manifold vertex.
@@ -278,32 +310,7 @@ Indexed_mesh make_indexed_mesh(const TriangleMesh& tm, VertexPointMap vpm, Verte
   if(n == 0)
     return mesh;
 
-  // Halves first, so that coordinates near the largest double do not overflow.
-  mesh.center = 0.5 * lo + 0.5 * hi;
-  const Eigen::Vector3d half_extent = 0.5 * hi - 0.5 * lo;
-  const double largest_half_extent = half_extent.maxCoeff();
-  if(largest_half_extent > 0)
-  {
-    // The half diagonal itself can overflow (half extents of 1.7e308), so its
-    // exponent is that of the largest half extent plus that of the diagonal of the
-    // box scaled by a power of two to that extent.
-    int exponent = 0, diagonal_exponent = 0;
-    std::frexp(largest_half_extent, &exponent);
-    // std::ldexp scales exactly, without overflow for tiny (subnormal) extents.
-    auto times_power_of_two = [](const Eigen::Vector3d& x, int e) {
-      return Eigen::Vector3d(std::ldexp(x.x(), e), std::ldexp(x.y(), e), std::ldexp(x.z(), e));
-    };
-    std::frexp(times_power_of_two(half_extent, -exponent).norm(), &diagonal_exponent);
-    exponent += diagonal_exponent;  // half_diagonal in [2^(e-1), 2^e)
-    for(Eigen::Vector3d& p : mesh.points)
-      p = times_power_of_two(0.5 * p - 0.5 * mesh.center, -exponent);  // = (p - center) * scale
-    // diagonal * scale = half_diagonal * 2^-e, in [0.5, 1)
-    mesh.scale_exponent = -1 - exponent;
-    mesh.scale = std::ldexp(1., mesh.scale_exponent);
-  }
-  else
-    for(Eigen::Vector3d& p : mesh.points)
-      p.setZero();
+  set_normalised_frame(mesh, lo, hi);
 
   auto throw_broken_structure = [](const char* element, std::size_t number) {
     std::ostringstream os;

@@ -10,7 +10,9 @@
 #include <Eigen/Core>
 #include <Eigen/Geometry>
 
+#include <array>
 #include <cmath>
+#include <utility>
 #include <vector>
 
 namespace CGAL {
@@ -27,32 +29,37 @@ struct Ncc_data
   std::vector<Eigen::Vector3d> tangential_part;  // of row i of N V: boundary and uniform-weight vertices, else rounding
 };
 
-// Mixed Voronoi areas of Meyer, Desbrun, Schroeder and Barr (2002): the Voronoi
-// region inside non-obtuse triangles, the midpoint rule inside obtuse ones. They sum
-// to the total area, and are positive since no face has zero area.
+// The mixed Voronoi areas of Meyer, Desbrun, Schroeder and Barr (2002) of the three
+// corners of the triangle (p0, p1, p2): the Voronoi region inside a non-obtuse
+// triangle, the midpoint rule inside an obtuse one. They sum to its area.
+inline std::array<double, 3> mixed_voronoi_corner_areas(const Eigen::Vector3d& p0, const Eigen::Vector3d& p1,
+                                                        const Eigen::Vector3d& p2)
+{
+  const Eigen::Vector3d e0 = p2 - p1, e1 = p0 - p2, e2 = p1 - p0;  // e_k opposite to vertex k
+  const double double_area = e0.cross(e1).norm();
+  const double area = 0.5 * double_area;
+  // cot of the angle at vertex k, from the two edges that meet there
+  const double d0 = -e1.dot(e2), d1 = -e2.dot(e0), d2 = -e0.dot(e1);
+  if(d0 < 0 || d1 < 0 || d2 < 0)
+    return {d0 < 0 ? 0.5 * area : 0.25 * area, d1 < 0 ? 0.5 * area : 0.25 * area,
+            d2 < 0 ? 0.5 * area : 0.25 * area};
+  const double cot0 = d0 / double_area, cot1 = d1 / double_area, cot2 = d2 / double_area;
+  return {(e1.squaredNorm() * cot1 + e2.squaredNorm() * cot2) / 8.,
+          (e2.squaredNorm() * cot2 + e0.squaredNorm() * cot0) / 8.,
+          (e0.squaredNorm() * cot0 + e1.squaredNorm() * cot1) / 8.};
+}
+
+// Mixed Voronoi areas of the vertices. They sum to the total area, and are positive
+// since no face has zero area.
 inline std::vector<double> mixed_voronoi_areas(const Indexed_mesh& mesh)
 {
   std::vector<double> areas(mesh.number_of_vertices(), 0.);
   for(const auto& t : mesh.triangles)
   {
-    const Eigen::Vector3d& p0 = mesh.points[t[0]];
-    const Eigen::Vector3d& p1 = mesh.points[t[1]];
-    const Eigen::Vector3d& p2 = mesh.points[t[2]];
-    const Eigen::Vector3d e0 = p2 - p1, e1 = p0 - p2, e2 = p1 - p0;  // e_k opposite to vertex k
-    const double double_area = e0.cross(e1).norm();
-    const double area = 0.5 * double_area;
-    // cot of the angle at vertex k, from the two edges that meet there
-    const double d0 = -e1.dot(e2), d1 = -e2.dot(e0), d2 = -e0.dot(e1);
-    if(d0 < 0 || d1 < 0 || d2 < 0)
-    {
-      for(int k = 0; k < 3; ++k)
-        areas[t[k]] += (k == 0 ? d0 : k == 1 ? d1 : d2) < 0 ? 0.5 * area : 0.25 * area;
-      continue;
-    }
-    const double cot0 = d0 / double_area, cot1 = d1 / double_area, cot2 = d2 / double_area;
-    areas[t[0]] += (e1.squaredNorm() * cot1 + e2.squaredNorm() * cot2) / 8.;
-    areas[t[1]] += (e2.squaredNorm() * cot2 + e0.squaredNorm() * cot0) / 8.;
-    areas[t[2]] += (e0.squaredNorm() * cot0 + e1.squaredNorm() * cot1) / 8.;
+    const std::array<double, 3> corner =
+        mixed_voronoi_corner_areas(mesh.points[t[0]], mesh.points[t[1]], mesh.points[t[2]]);
+    for(int k = 0; k < 3; ++k)
+      areas[t[k]] += corner[k];
   }
   return areas;
 }
@@ -117,11 +124,15 @@ inline void ncc_weights(const Indexed_mesh& mesh, std::size_t i, const Eigen::Ve
 // vertices it has a tangential part: the NCC is its normal component
 // (s_i n_i, s_i = r_i . n_i), and the tangential part is kept aside so that the
 // reconstruction can hold it fixed (it is local parameterisation, not shape).
-inline Ncc_data compute_ncc_data(const Indexed_mesh& mesh, std::vector<Eigen::Vector3d> normals)
+//
+// `areas` are the a_i; a mesh's are its mixed_voronoi_areas(), a point set's those of
+// each point's own fan (internal/point_set_surface.h).
+inline Ncc_data compute_ncc_data(const Indexed_mesh& mesh, std::vector<Eigen::Vector3d> normals,
+                                 std::vector<double> areas)
 {
   const std::size_t n = mesh.number_of_vertices();
   Ncc_data data;
-  data.areas = mixed_voronoi_areas(mesh);
+  data.areas = std::move(areas);
   data.normals = std::move(normals);
   data.weights.assign(mesh.fan.size(), 0.);
   data.signature.assign(n, 0.);
@@ -138,6 +149,11 @@ inline Ncc_data compute_ncc_data(const Indexed_mesh& mesh, std::vector<Eigen::Ve
     data.tangential_part[i] = r - data.signature[i] * data.normals[i];
   });
   return data;
+}
+
+inline Ncc_data compute_ncc_data(const Indexed_mesh& mesh, std::vector<Eigen::Vector3d> normals)
+{
+  return compute_ncc_data(mesh, std::move(normals), mixed_voronoi_areas(mesh));
 }
 
 } // namespace internal
