@@ -45,6 +45,23 @@ namespace Heat_diffusion {
 /// manual), so the default diffuses the <em>normals</em> with the anisotropic edge weights
 /// of eq. 10 instead, and fits the vertices to them. Every length it uses is local to a
 /// vertex or a face, so that meshes of very uneven triangles are treated like even ones:
+///  0. impulsive noise (a fraction of the vertices displaced far, the others clean) is
+///     removed first, by an outlier test: the neighbours \f$ u_k \f$ of an interior vertex
+///     \f$ v_i \f$ define, without it, a plane through their mean \f$ c_i \f$ with the normal
+///     \f$ n_i \f$ of their polygon; \f$ h_i = n_i \cdot (v_i - c_i) \f$ is the height of
+///     \f$ v_i \f$ above it, \f$ \rho_i \f$ the root mean square height of the \f$ u_k \f$
+///     (how much the ring itself is folded), and \f$ r_i = h_i - p_i \f$ the residual, \f$ p_i \f$
+///     the mean of the neighbours' own heights (a smooth surface's curvature cancels in it).
+///     \f$ v_i \f$ is an outlier if \f$ |h_i| > 3 \rho_i \f$ (not a crease or a corner, which fold
+///     the ring), \f$ |h_i| > 0.05\, e_i \f$ (\f$ e_i \f$ its mean edge length), \f$ r_i h_i > 0 \f$
+///     and \f$ |r_i| > 4 s \f$, s the median of \f$ |r_j| \f$ over the vertices divided by
+///     0.6745 (the scale of the clean majority); it is moved along \f$ n_i \f$ to the
+///     height \f$ p_i \f$, so that it does not slide within the surface. The test runs up to
+///     8 rounds, each moving every outlier found so far again. If the first round finds
+///     fewer outliers than 1 % of the vertices (the tips and corners of a clean mesh, which
+///     no local test tells from an impulse), the mesh is left as it is; otherwise what
+///     follows runs on the result, as its input (noise that is both Gaussian and
+///     impulsive needs both). Not with a user `normal_sigma`;
 ///  1. the noise level \f$ \hat\varepsilon \f$ is the median over interior vertices of the
 ///     distance of \f$ v_i \f$, along its area-weighted normal, from the mean of its
 ///     neighbours, divided by \f$ 0.6745 \sqrt{1 + 1/d_i} \f$ (\f$ d_i \f$ the degree): about
@@ -245,9 +262,9 @@ namespace Heat_diffusion {
 ///     \cgalParamType{`std::size_t`, positive}
 ///     \cgalParamDefault{`150`}
 ///   \cgalParamNEnd
-///   \cgalParamNBegin{kernel_method, operator_normalization, coarse_vertex_count}
+///   \cgalParamNBegin{kernel_method, operator_normalization, local_kernel_tolerance, coarse_vertex_count}
 ///     \cgalParamDescription{signature diffusion only: how the heat kernel of each iteration is evaluated and made into \f$ A_t \f$, and its coarse level (see `Anisotropic_heat_diffusion` and `Edge_weighted_heat_kernel`)}
-///     \cgalParamDefault{`Heat_kernel_method::automatic` (local unless `number_of_eigenpairs` or `coarse_vertex_count` is given); `Operator_normalization::balanced`; the automatic coarse level}
+///     \cgalParamDefault{`Heat_kernel_method::automatic` (local unless `number_of_eigenpairs` or `coarse_vertex_count` is given); `Operator_normalization::balanced`; `defaults::local_kernel_tolerance`; the automatic coarse level}
 ///   \cgalParamNEnd
 ///   \cgalParamNBegin{anchor_weight}
 ///     \cgalParamDescription{signature diffusion only: the weight of the positional anchors of the reconstruction (see `reconstruct_from_normal_signature()`): smaller moves the vertices further per iteration}
@@ -338,6 +355,8 @@ Denoising_report denoise_mesh(TriangleMesh& tm, const NamedParameters& np = para
   const Heat_kernel_method kernel_method = internal::resolve_kernel_method(np, false);
   const Operator_normalization normalization =
       internal::parameter_value(np, internal_np::operator_normalization, Operator_normalization::balanced);
+  const double kernel_tolerance =
+      internal::parameter_value(np, internal_np::local_kernel_tolerance, defaults::local_kernel_tolerance);
   // Left to Edge_weighted_heat_kernel where not given (its automatic choice).
   const std::optional<long long> coarse_vertex_count =
       internal::is_given(np, internal_np::coarse_vertex_count)
@@ -428,6 +447,7 @@ Denoising_report denoise_mesh(TriangleMesh& tm, const NamedParameters& np = para
                                 parameters::number_of_eigenpairs(std::size_t(eigenpairs)),
                                 parameters::kernel_method(kernel_method),
                                 parameters::operator_normalization(normalization),
+                                parameters::local_kernel_tolerance(kernel_tolerance),
                                 parameters::coarse_vertex_count(coarse_vertex_count),
                                 parameters::progress_callback(progress)));
     const Normal_controlled_coordinates<TriangleMesh, GeomTraits>& ncc = diffusion.normal_controlled_coordinates();

@@ -54,7 +54,10 @@ enum class Denoising_stage
   /// the cotangent flow W, rescaled to its volume.
   cotangent_flow,
   /// `Denoising_method::signature_diffusion`.
-  signature_diffusion
+  signature_diffusion,
+  /// Impulsive noise: the outliers that the test of step 0 found were moved back along
+  /// their rings' normals, and the filters that followed left the result as it was.
+  impulses
 };
 
 /// \ingroup PkgHeatDiffusionApplications
@@ -72,6 +75,9 @@ struct Denoising_report
   std::size_t iterations = 0;
   /// The stage whose result was returned.
   Denoising_stage stage = Denoising_stage::unchanged;
+  /// Normal filtering: the number of vertices that the outlier test (step 0 of
+  /// `denoise_mesh()`) moved back; 0 where it found no impulsive noise.
+  std::size_t impulses = 0;
   /// Signature diffusion: the kernel that `Heat_kernel_method::automatic` (or the user)
   /// selected. Normal filtering builds no heat kernel: `Heat_kernel_method::automatic`.
   Heat_kernel_method kernel_method = Heat_kernel_method::automatic;

@@ -12,6 +12,7 @@
 
 #include <CGAL/Heat_diffusion/denoising_report.h>
 #include <CGAL/Heat_diffusion/internal/Denoising/face_adjacency.h>
+#include <CGAL/Heat_diffusion/internal/Denoising/impulse_removal.h>
 #include <CGAL/Heat_diffusion/internal/Denoising/needle_surface_fit.h>
 #include <CGAL/Heat_diffusion/internal/Denoising/noise_level.h>
 #include <CGAL/Heat_diffusion/internal/Denoising/normal_fit.h>
@@ -205,8 +206,9 @@ inline std::size_t final_relaxation_steps(double noise_in_mean_edges)
 // A mesh without measurable noise is left unchanged, and so is a curved one whose
 // roughness after 1 is as large as its noise estimate (the estimate was all shape).
 // `report`, if given, receives the noise level, the iterations and the stage returned.
-inline std::vector<Eigen::Vector3d> filter_normals(const Indexed_mesh& mesh, const Normal_filtering_options& options,
-                                                   const Progress& reporter, Denoising_report* report = nullptr)
+inline std::vector<Eigen::Vector3d> filter_normals_of_input(const Indexed_mesh& mesh,
+                                                            const Normal_filtering_options& options,
+                                                            const Progress& reporter, Denoising_report* report)
 {
   const std::size_t n = mesh.number_of_vertices();
   const Face_adjacency adjacency = make_face_adjacency(mesh);
@@ -470,6 +472,39 @@ inline std::vector<Eigen::Vector3d> filter_normals(const Indexed_mesh& mesh, con
     for(std::size_t i = 0; i < n; ++i)
       points[i] = needle_weight * points[i] + (1. - needle_weight) * small_steps[i];
   unless_eroded(Denoising_stage::needle_fit);
+  return points;
+}
+
+// The default algorithm: the outlier test (remove_impulses()), then the filter above
+// (filter_normals_of_input()) on its result, which is then the filter's input: its
+// noise level, its displacements and its shrinkage are measured from there. Impulsive
+// noise defeats the filter alone: its noise level, a median, reads the clean majority
+// of the vertices, and the phases stopped on it leave the impulses and blur the clean
+// detail around them (fandisk with impulses of 1 mean edge length on a fifth of the
+// vertices: 18.8 degrees of MAD, against 20.2 for the noisy input). The filter still
+// runs after the test: real noise is rarely impulses alone, and on Gaussian noise with
+// impulses (0.1 mean edge length on every vertex, impulses of 0.5 on a tenth) the test
+// alone leaves fandisk at 13.2 degrees, the filter alone gives 2.01, both 1.80. (On
+// impulses alone the test alone does better on some meshes: head 6.10 degrees on
+// average over the four impulsive inputs of the benchmark, 8.20 with the filter
+// after it.) With a user normal_sigma the filter runs alone, as asked.
+inline std::vector<Eigen::Vector3d> filter_normals(const Indexed_mesh& mesh, const Normal_filtering_options& options,
+                                                   const Progress& reporter, Denoising_report* report = nullptr)
+{
+  std::vector<Eigen::Vector3d> cleaned = mesh.points;
+  const std::size_t impulses =
+      options.normal_sigma > 0 || options.iterations == 0 ? 0 : remove_impulses(mesh, cleaned);
+  if(impulses == 0)
+    return filter_normals_of_input(mesh, options, reporter, report);
+  Indexed_mesh cleaned_mesh = mesh;
+  cleaned_mesh.points.swap(cleaned);
+  std::vector<Eigen::Vector3d> points = filter_normals_of_input(cleaned_mesh, options, reporter, report);
+  if(report)
+  {
+    report->impulses = impulses;
+    if(report->stage == Denoising_stage::unchanged)
+      report->stage = Denoising_stage::impulses;
+  }
   return points;
 }
 
