@@ -1,0 +1,634 @@
+// Copyright (c) 2026 The CGAL Heat_diffusion developers.
+// SPDX-License-Identifier: LGPL-3.0-or-later
+//
+// A point set as the surface every algorithm of the package runs on: each point's local
+// fan, the Delaunay triangulation of its nearest neighbours projected on its tangent
+// plane (Sharp and Crane, "A Laplacian for Nonmanifold Triangle Meshes", SGP 2020,
+// section 5.7), gives its NCC; the union of the fans gives the neighbour graph and the
+// triangles of the heat operators.
+
+#ifndef CGAL_HEAT_DIFFUSION_INTERNAL_POINT_SET_SURFACE_H
+#define CGAL_HEAT_DIFFUSION_INTERNAL_POINT_SET_SURFACE_H
+
+#include <CGAL/Heat_diffusion/internal/Indexed_mesh.h>
+#include <CGAL/Heat_diffusion/internal/errors.h>
+#include <CGAL/Heat_diffusion/internal/ncc_weights.h>
+#include <CGAL/Heat_diffusion/internal/parallel_for.h>
+
+#include <CGAL/Delaunay_triangulation_2.h>
+#include <CGAL/Exact_predicates_inexact_constructions_kernel.h>
+#include <CGAL/Fuzzy_sphere.h>
+#include <CGAL/Kd_tree.h>
+#include <CGAL/Orthogonal_k_neighbor_search.h>
+#include <CGAL/Search_traits_3.h>
+#include <CGAL/Search_traits_adapter.h>
+#include <CGAL/Triangulation_data_structure_2.h>
+#include <CGAL/Triangulation_vertex_base_with_info_2.h>
+#include <CGAL/jet_estimate_normals.h>
+#include <CGAL/mst_orient_normals.h>
+#include <CGAL/property_map.h>
+#include <CGAL/tags.h>
+
+#include <boost/iterator/function_output_iterator.hpp>
+
+#include <Eigen/Core>
+#include <Eigen/Geometry>
+
+#include <algorithm>
+#include <array>
+#include <cstddef>
+#include <functional>
+#include <limits>
+#include <numeric>
+#include <sstream>
+#include <tuple>
+#include <utility>
+#include <vector>
+
+namespace CGAL {
+namespace Heat_diffusion {
+namespace internal {
+
+// The surface of a point set, in the layout of a mesh's Indexed_mesh, so that the heat
+// regions, the local kernel, the balancing and the features run on it unchanged:
+// - mesh.points: the points, in the normalised frame of Indexed_mesh;
+// - mesh.fan: the neighbours of each point in the graph of the union of all fans'
+//   triangles, in increasing order (the graph of L and B: for a mesh, the one-ring is
+//   that graph; here it is not a fan, and nothing reads it as one);
+// - mesh.fan_is_closed: whether the point's own fan is closed (0: a border point);
+// - mesh.triangles: the distinct triangles of the fans, corners in increasing order
+//   (two fans can hold one triangle with opposite orientations);
+// - ncc: the NCC data of each point from its own fan, the weights aligned with mesh.fan
+//   (0 at graph neighbours outside the point's fan).
+struct Point_set_surface
+{
+  Indexed_mesh mesh;
+  std::vector<double> triangle_weights;  // (number of fans holding the triangle) / 3
+  // Each point's own fan, as Indexed_mesh::fan orders one: neighbours clockwise around
+  // the normal, consecutive ones spanning the triangle (u_k, i, u_k+1), the last and
+  // first one too if the fan is closed.
+  std::vector<std::size_t> local_fan_begin, local_fan;
+  Ncc_data ncc;
+  // Estimated normals: the triangles that two fans list in opposite orientations.
+  std::size_t orientation_conflicts = 0;
+
+  std::size_t number_of_points() const { return mesh.number_of_vertices(); }
+};
+
+struct Point_set_surface_options
+{
+  std::size_t k = 0;             // neighbours per point (with a radius: at most k, 0 for no limit)
+  double neighbor_radius = 0.;   // in user units; 0: the k nearest neighbours
+};
+
+[[noreturn]] inline void throw_point_error(std::size_t i, const std::string& what)
+{
+  std::ostringstream os;
+  os << "point " << i << " " << what;
+  throw_invalid_input(os.str());
+}
+
+// What went wrong at a point in a parallel loop, reported afterwards for the point of
+// smallest index, so that the message does not depend on the threads.
+struct Point_problems
+{
+  explicit Point_problems(std::size_t n) : code(n, 0), other(n, 0) {}
+  std::vector<unsigned char> code;  // 0: fine
+  std::vector<std::size_t> other;   // a second point, for the messages that name one
+  std::size_t first() const
+  {
+    return std::size_t(std::find_if(code.begin(), code.end(), [](unsigned char c) { return c != 0; }) -
+                       code.begin());
+  }
+};
+
+// The neighbours of every point (without the point itself), nearest first: the k nearest,
+// or those within the radius (nearest k of them if k > 0), by CGAL's kd-tree, in the
+// normalised frame. Throws, naming the points, if two points coincide.
+inline std::vector<std::vector<std::size_t> > find_neighbours(const std::vector<Eigen::Vector3d>& points,
+                                                              std::size_t k, double radius)
+{
+  typedef CGAL::Exact_predicates_inexact_constructions_kernel K;
+  typedef CGAL::Pointer_property_map<K::Point_3>::type Point_of_index;
+  typedef CGAL::Search_traits_3<K> Base_traits;
+  typedef CGAL::Search_traits_adapter<std::size_t, Point_of_index, Base_traits> Traits;
+  typedef CGAL::Distance_adapter<std::size_t, Point_of_index, CGAL::Euclidean_distance<Base_traits> > Distance;
+  typedef CGAL::Orthogonal_k_neighbor_search<Traits, Distance> Search;
+  typedef Search::Tree Tree;
+
+  const std::size_t n = points.size();
+  std::vector<K::Point_3> cgal_points(n);
+  for(std::size_t i = 0; i < n; ++i)
+    cgal_points[i] = K::Point_3(points[i].x(), points[i].y(), points[i].z());
+  const Point_of_index point_of_index = CGAL::make_property_map(cgal_points);
+  std::vector<std::size_t> indices(n);
+  std::iota(indices.begin(), indices.end(), std::size_t(0));
+  const Traits traits(point_of_index);
+  Tree tree(indices.begin(), indices.end(), Tree::Splitter(), traits);
+  tree.build();  // before the parallel queries, which only read it
+  const Distance distance(point_of_index);
+
+  std::vector<std::vector<std::size_t> > neighbours(n);
+  Point_problems problems(n);
+  parallel_for(n, [&](std::size_t i) {
+    std::vector<std::pair<double, std::size_t> > found;  // (squared distance, index)
+    if(radius > 0)
+    {
+      const CGAL::Fuzzy_sphere<Traits> sphere(i, radius, 0., traits);
+      // (the kd-tree assigns its output iterator, which a lambda's is not)
+      const std::function<void(std::size_t)> add = [&](std::size_t j) {
+        found.emplace_back((points[j] - points[i]).squaredNorm(), j);
+      };
+      tree.search(boost::make_function_output_iterator(add), sphere);
+      std::sort(found.begin(), found.end());
+      if(k > 0 && found.size() > k + 1)
+        found.resize(k + 1);
+    }
+    else
+    {
+      // (k + 1: the point itself is among them)
+      const Search search(tree, cgal_points[i], unsigned(k + 1), 0., true, distance);
+      for(const auto& result : search)
+        found.emplace_back((points[result.first] - points[i]).squaredNorm(), result.first);
+      std::sort(found.begin(), found.end());
+    }
+    auto& list = neighbours[i];
+    for(const auto& f : found)
+      if(f.second != i)
+      {
+        if(!(f.first > 0))
+        {
+          problems.code[i] = 1;
+          problems.other[i] = f.second;
+        }
+        list.push_back(f.second);
+      }
+    if(list.size() > (k > 0 ? k : list.size()))
+      list.resize(k);  // the point itself was not among the k + 1 (it has duplicates)
+  });
+  const std::size_t bad = problems.first();
+  if(bad < n)
+  {
+    std::ostringstream os;
+    os << "coincides with point " << problems.other[bad]
+       << "; the package needs distinct points (CGAL::grid_simplify_point_set() merges duplicates)";
+    throw_point_error(bad, os.str());
+  }
+  return neighbours;
+}
+
+// Unit normals of the points, in the normalised frame, by CGAL::jet_estimate_normals()
+// and oriented by CGAL::mst_orient_normals(), over the same neighbourhoods (k, radius in
+// the normalised frame). Throws, naming a point, where a normal is not usable or cannot
+// be oriented.
+inline std::vector<Eigen::Vector3d> estimate_oriented_normals(const std::vector<Eigen::Vector3d>& points,
+                                                              std::size_t k, double radius)
+{
+  typedef CGAL::Exact_predicates_inexact_constructions_kernel K;
+  typedef std::tuple<K::Point_3, K::Vector_3, std::size_t> Item;
+  const std::size_t n = points.size();
+  std::vector<Item> items(n);
+  for(std::size_t i = 0; i < n; ++i)
+    items[i] = Item(K::Point_3(points[i].x(), points[i].y(), points[i].z()), K::Vector_3(0, 0, 0), i);
+  const auto np = CGAL::parameters::point_map(CGAL::Nth_of_tuple_property_map<0, Item>())
+                      .normal_map(CGAL::Nth_of_tuple_property_map<1, Item>())
+                      .neighbor_radius(radius)
+                      // a quadric needs 6 points: the point and 5 neighbours
+                      .degree_fitting(k >= 5 || radius > 0 ? 2 : 1);
+  // (jet_estimate_normals() counts the point itself among its k)
+  CGAL::jet_estimate_normals<CGAL::Parallel_if_available_tag>(items, unsigned(k + 1), np);
+  for(const Item& item : items)
+  {
+    const K::Vector_3& v = std::get<1>(item);
+    const Eigen::Vector3d normal(v.x(), v.y(), v.z());
+    if(!normal.allFinite() || !(normal.norm() > 0))
+      throw_point_error(std::get<2>(item), "has no usable estimated normal (its neighbourhood is degenerate); "
+                                           "give normals with the normal_map named parameter");
+  }
+  const auto unoriented = CGAL::mst_orient_normals(items, unsigned(k + 1), np);
+  if(unoriented != items.end())
+  {
+    std::ostringstream os;
+    os << "has a normal that CGAL::mst_orient_normals() could not orient (with "
+       << (items.end() - unoriented - 1) << " other points): its neighbourhood graph does not reach the"
+       << " point the orientation starts from (several connected components, or too few neighbours);"
+       << " give oriented normals with the normal_map named parameter, or more neighbours";
+    std::size_t first = n;
+    for(auto it = unoriented; it != items.end(); ++it)
+      first = (std::min)(first, std::get<2>(*it));
+    throw_point_error(first, os.str());
+  }
+  std::vector<Eigen::Vector3d> normals(n);
+  for(const Item& item : items)
+  {
+    const K::Vector_3& v = std::get<1>(item);
+    normals[std::get<2>(item)] = Eigen::Vector3d(v.x(), v.y(), v.z()).normalized();
+  }
+  return normals;
+}
+
+// The fan of point i: the neighbours of its Delaunay triangulation among `neighbours`
+// projected on the plane orthogonal to `normal`, clockwise around the normal (the order
+// of Indexed_mesh::fan), written to `fan`; returns whether it is closed (false: i is on
+// the hull of the projection, a border point). Returns 0 and leaves `fan` empty if the
+// projections are collinear. A neighbour whose projection coincides with that of i or
+// of a nearer neighbour is left out.
+inline int local_delaunay_fan(const std::vector<Eigen::Vector3d>& points, std::size_t i,
+                              const std::vector<std::size_t>& neighbours, const Eigen::Vector3d& normal,
+                              std::vector<std::size_t>& fan)
+{
+  typedef CGAL::Exact_predicates_inexact_constructions_kernel K;
+  typedef CGAL::Triangulation_vertex_base_with_info_2<std::size_t, K> Vb;
+  typedef CGAL::Triangulation_data_structure_2<Vb> Tds;
+  typedef CGAL::Delaunay_triangulation_2<K, Tds> Delaunay;
+  // (t1, t2, normal) is direct: counterclockwise in (t1, t2) is counterclockwise around the normal
+  const Eigen::Vector3d t1 = normal.unitOrthogonal(), t2 = normal.cross(t1);
+  Delaunay dt;
+  const auto center = dt.insert(K::Point_2(0., 0.));
+  center->info() = i;
+  for(std::size_t j : neighbours)
+  {
+    const Eigen::Vector3d e = points[j] - points[i];
+    const std::size_t before = dt.number_of_vertices();
+    const auto v = dt.insert(K::Point_2(e.dot(t1), e.dot(t2)));
+    // (a vertex that was there keeps the point it was made for)
+    if(dt.number_of_vertices() > before)
+      v->info() = j;
+  }
+  fan.clear();
+  if(dt.dimension() < 2)
+    return 0;
+  // Counterclockwise around i, starting after the infinite vertex if there is one.
+  std::vector<std::size_t> around;
+  std::size_t infinite_position = std::size_t(-1);
+  auto circulator = dt.incident_vertices(center), done = circulator;
+  do
+  {
+    if(dt.is_infinite(circulator))
+      infinite_position = around.size();
+    else
+      around.push_back(circulator->info());
+  } while(++circulator != done);
+  const bool closed = infinite_position == std::size_t(-1);
+  const std::size_t d = around.size(), start = closed ? 0 : infinite_position % (d == 0 ? 1 : d);
+  for(std::size_t q = 0; q < d; ++q)
+    fan.push_back(around[(start + d - 1 - q) % d]);  // reversed: clockwise
+  return closed ? 2 : 1;
+}
+
+// Removes from the fan of point i (as local_delaunay_fan() makes it) the triangles whose
+// area is not resolved (has_resolved_area()): points that are collinear in space, as on
+// the border rows of a scanner's grid, project onto points that rounding may leave
+// barely off a line, and the exact predicates of the triangulation then make a
+// triangle of them. Returns false if the triangles left are not one run (no fan), or
+// none; the fan is then an open one where a triangle was removed.
+inline bool keep_resolved_triangles(const Indexed_mesh& mesh, std::size_t i, std::vector<std::size_t>& fan,
+                                    bool& closed)
+{
+  const std::size_t d = fan.size(), m = closed ? d : d - 1;
+  std::vector<unsigned char> good(m);
+  std::size_t bad = m;
+  for(std::size_t q = 0; q < m; ++q)
+  {
+    good[q] = has_resolved_area(mesh, {fan[q], i, fan[(q + 1) % d]});
+    if(!good[q])
+      bad = q;
+  }
+  if(bad == m)
+    return true;
+  // The runs of good triangles, from just after a bad one if the fan is closed.
+  const std::size_t start = closed ? bad + 1 : 0;
+  std::size_t runs = 0, first = 0, length = 0;
+  for(std::size_t a = 0; a < m; ++a)
+  {
+    const std::size_t q = (start + a) % m;
+    if(good[q] && (a == 0 || !good[(q + m - 1) % m]))
+    {
+      ++runs;
+      first = q;
+    }
+    if(good[q])
+      ++length;
+  }
+  if(runs != 1)
+    return false;
+  std::vector<std::size_t> kept;
+  for(std::size_t a = 0; a <= length; ++a)
+    kept.push_back(fan[(first + a) % d]);
+  fan.swap(kept);
+  closed = false;
+  return true;
+}
+
+// The pairs of points whose fans hold a same triangle, with the relation of their
+// orientations: two fans list a triangle clockwise around their own normals, so that
+// they list it in the same orientation exactly when the two normals are consistently
+// oriented. relation = +1: consistent as they are; -1: one of the normals must flip.
+struct Shared_triangle
+{
+  std::size_t p, q;
+  int relation;
+};
+
+inline std::vector<Shared_triangle> shared_triangles(const std::vector<std::vector<std::size_t> >& fans,
+                                                     const std::vector<unsigned char>& closed)
+{
+  struct Entry
+  {
+    std::array<std::size_t, 3> key;
+    std::size_t point;
+    int parity;  // +1 if (u_k, i, u_k+1) is an even permutation of the sorted key
+  };
+  std::vector<Entry> entries;
+  for(std::size_t i = 0; i < fans.size(); ++i)
+  {
+    const std::size_t d = fans[i].size();
+    for(std::size_t q = 0; q + 1 < d || (closed[i] && q < d); ++q)
+    {
+      std::array<std::size_t, 3> t = {fans[i][q], i, fans[i][(q + 1) % d]};
+      int parity = 1;
+      for(int pass = 0; pass < 2; ++pass)  // (a bubble sort of three, counting the swaps)
+        for(int a = 0; a < 2; ++a)
+          if(t[a] > t[a + 1])
+          {
+            std::swap(t[a], t[a + 1]);
+            parity = -parity;
+          }
+      entries.push_back(Entry{t, i, parity});
+    }
+  }
+  std::sort(entries.begin(), entries.end(), [](const Entry& a, const Entry& b) {
+    return a.key < b.key || (a.key == b.key && a.point < b.point);
+  });
+  std::vector<Shared_triangle> shared;
+  for(std::size_t a = 0; a < entries.size();)
+  {
+    std::size_t b = a + 1;
+    while(b < entries.size() && entries[b].key == entries[a].key)
+      ++b;
+    for(std::size_t c = a; c < b; ++c)
+      for(std::size_t e = c + 1; e < b; ++e)
+        shared.push_back(Shared_triangle{entries[c].point, entries[e].point, entries[c].parity * entries[e].parity});
+    a = b;
+  }
+  return shared;
+}
+
+// Flips the normals (and fans) of the points most of whose shared triangles disagree
+// with their neighbours' orientation, sweep after sweep until none does (or 20 sweeps):
+// an orientation wrong on a few isolated points is repaired.
+inline void orient_by_majority(std::vector<std::vector<std::size_t> >& fans, const std::vector<unsigned char>& closed,
+                               std::vector<Eigen::Vector3d>& normals)
+{
+  const std::size_t n = fans.size();
+  std::vector<std::vector<std::pair<std::size_t, int> > > edges(n);
+  for(const Shared_triangle& t : shared_triangles(fans, closed))
+  {
+    edges[t.p].emplace_back(t.q, t.relation);
+    edges[t.q].emplace_back(t.p, t.relation);
+  }
+  std::vector<int> sign(n, 1);
+  for(int sweep = 0; sweep < 20; ++sweep)
+  {
+    bool changed = false;
+    for(std::size_t p = 0; p < n; ++p)
+    {
+      int score = 0;
+      for(const auto& e : edges[p])
+        score += e.second * sign[p] * sign[e.first];
+      if(score < 0)
+      {
+        sign[p] = -sign[p];
+        changed = true;
+      }
+    }
+    if(!changed)
+      break;
+  }
+  for(std::size_t i = 0; i < n; ++i)
+    if(sign[i] < 0)
+    {
+      normals[i] = -normals[i];
+      std::reverse(fans[i].begin(), fans[i].end());
+    }
+}
+
+// Builds the surface of `points` (user coordinates): neighbours, normals (`user_normals`
+// if not empty, in user orientation, else estimated and oriented), fans, NCC and the
+// graph. Throws std::invalid_argument, naming the point, where the package cannot
+// process the input: a non-finite coordinate or normal, a null normal, fewer than k + 1
+// points, coinciding points, a neighbourhood that is collinear on its tangent plane, a
+// normal that cannot be oriented.
+//
+// The NCC's normal of a point is the user's, or else the area-weighted normal of its
+// own fan (MWAAT, the mesh's default rule), oriented by the estimated normal: where the
+// fan is the mesh's one-ring, the point's NS is then the vertex's.
+inline Point_set_surface make_point_set_surface(std::vector<Eigen::Vector3d> user_points,
+                                                std::vector<Eigen::Vector3d> user_normals,
+                                                const Point_set_surface_options& options)
+{
+  const std::size_t n = user_points.size();
+  const bool given_normals = !user_normals.empty();
+  Point_set_surface surface;
+  Indexed_mesh& mesh = surface.mesh;
+  if(n == 0)
+    return surface;
+  if(options.neighbor_radius > 0 ? !std::isfinite(options.neighbor_radius) : options.k < 2)
+    throw_invalid_input("the neighbour count k must be at least 2 (or a finite neighbor_radius given)");
+  if(options.neighbor_radius <= 0 && n < options.k + 1)
+  {
+    std::ostringstream os;
+    os << "the point set has " << n << " points, fewer than k + 1 = " << options.k + 1
+       << " (each point needs k neighbours)";
+    throw_invalid_input(os.str());
+  }
+  Eigen::Vector3d lo = Eigen::Vector3d::Constant(std::numeric_limits<double>::infinity()), hi = -lo;
+  for(std::size_t i = 0; i < n; ++i)
+  {
+    if(!user_points[i].allFinite())
+    {
+      std::ostringstream os;
+      os << "has a non-finite coordinate (" << user_points[i].transpose() << ")";
+      throw_point_error(i, os.str());
+    }
+    if(given_normals && (!user_normals[i].allFinite() || !(user_normals[i].norm() > 0)))
+    {
+      std::ostringstream os;
+      os << "has a null or non-finite normal (" << user_normals[i].transpose() << ")";
+      throw_point_error(i, os.str());
+    }
+    lo = lo.cwiseMin(user_points[i]);
+    hi = hi.cwiseMax(user_points[i]);
+  }
+  mesh.points = std::move(user_points);
+  set_normalised_frame(mesh, lo, hi);
+  const std::vector<Eigen::Vector3d>& p = mesh.points;
+  // (a radius in user units is scaled like the points; a power of two, exact)
+  const double radius = std::ldexp(options.neighbor_radius, mesh.scale_exponent);
+
+  const std::vector<std::vector<std::size_t> > neighbours = find_neighbours(p, options.k, radius);
+  std::vector<Eigen::Vector3d> normals;
+  if(given_normals)
+  {
+    normals = std::move(user_normals);
+    for(Eigen::Vector3d& v : normals)
+      v.normalize();
+  }
+  else
+    normals = estimate_oriented_normals(p, options.k, radius);
+
+  // The fans, the NCC normals and the Voronoi areas, point by point.
+  std::vector<std::vector<std::size_t> > fans(n);
+  std::vector<unsigned char> closed(n, 0);
+  std::vector<double> areas(n, 0.);
+  std::vector<Eigen::Vector3d> ncc_normals(n);
+  Point_problems problems(n);
+  parallel_for(n, [&](std::size_t i) {
+    std::vector<std::size_t>& fan = fans[i];
+    const int kind = neighbours[i].size() < 2 ? 0 : local_delaunay_fan(p, i, neighbours[i], normals[i], fan);
+    if(kind == 0)
+    {
+      problems.code[i] = 1;
+      return;
+    }
+    bool is_closed = kind == 2;
+    if(!keep_resolved_triangles(mesh, i, fan, is_closed))
+    {
+      problems.code[i] = 2;
+      return;
+    }
+    closed[i] = is_closed;
+    const std::size_t d = fan.size();
+    Eigen::Vector3d area_weighted = Eigen::Vector3d::Zero();
+    for(std::size_t q = 0; q + 1 < d || (closed[i] && q < d); ++q)
+    {
+      const std::size_t a = fan[q], b = fan[(q + 1) % d];
+      area_weighted += mesh.cross_product(a, i, b);
+      areas[i] += mixed_voronoi_corner_areas(p[a], p[i], p[b])[1];
+    }
+    ncc_normals[i] = given_normals ? normals[i] : Eigen::Vector3d(area_weighted.normalized());
+  });
+  const std::size_t bad = problems.first();
+  if(bad < n)
+  {
+    std::ostringstream os;
+    if(problems.code[bad] == 1)
+      os << "has a degenerate neighbourhood: its " << neighbours[bad].size()
+         << " neighbours project on its tangent plane onto a line, so that they form no fan around it"
+         << " (more neighbours, or a normal_map, may help)";
+    else
+      os << "has no fan: the triangles of its neighbourhood's triangulation that are not collinear to double"
+         << " precision do not form one fan around it";
+    throw_point_error(bad, os.str());
+  }
+
+  if(!given_normals)
+  {
+    orient_by_majority(fans, closed, normals);
+    for(std::size_t i = 0; i < n; ++i)
+      if(ncc_normals[i].dot(normals[i]) < 0)
+        ncc_normals[i] = -ncc_normals[i];
+    // mst_orient_normals() walks the nearest-neighbour graph, which can cross a thin part
+    // (an ear, a trunk) from one side to the other and flip a whole region: the fans
+    // there then list their shared triangles in opposite orientations. Measured with
+    // k = 8 on the vertices of CGAL's meshes: 0 such triangles on fandisk and
+    // mech-holes-shark, 25 on armadillo (26002 points, 8 normals off the mesh's), 320
+    // on elephant (2775 points, 1785 normals flipped): a bound of 1 % of the points.
+    std::size_t conflicts = 0, first = n;
+    for(const Shared_triangle& t : shared_triangles(fans, closed))
+      if(t.relation < 0)
+      {
+        ++conflicts;
+        first = (std::min)({first, t.p, t.q});
+      }
+    surface.orientation_conflicts = conflicts;
+    if(conflicts > n / 100)
+    {
+      std::ostringstream os;
+      os << "has a normal that CGAL::mst_orient_normals() oriented against its neighbours': " << conflicts
+         << " triangles shared by two points' fans have opposite orientations in them (more than 1 % of the "
+         << n << " points), which happens where the nearest-neighbour graph crosses a thin part of the shape;"
+         << " give oriented normals with the normal_map named parameter";
+      throw_point_error(first, os.str());
+    }
+  }
+
+  // The fans in Indexed_mesh's layout, for the NCC.
+  mesh.fan_begin.assign(n + 1, 0);
+  for(std::size_t i = 0; i < n; ++i)
+    mesh.fan_begin[i + 1] = mesh.fan_begin[i] + fans[i].size();
+  mesh.fan.resize(mesh.fan_begin[n]);
+  for(std::size_t i = 0; i < n; ++i)
+    std::copy(fans[i].begin(), fans[i].end(), mesh.fan.begin() + std::ptrdiff_t(mesh.fan_begin[i]));
+  mesh.fan_is_closed = closed;
+  Ncc_data fan_ncc = compute_ncc_data(mesh, std::move(ncc_normals), std::move(areas));
+  for(std::size_t i = 0; i < n; ++i)
+    if(!std::isfinite(fan_ncc.signature[i]) || !(fan_ncc.areas[i] > 0))
+      throw_point_error(i, "has a fan whose NCC is not finite (a Voronoi area of 0)");
+
+  // The triangles of the fans, each once, weighted by the number of fans holding it / 3
+  // (Sharp and Crane: a triangle that all three of its corners see counts fully).
+  std::vector<std::array<std::size_t, 3> > triangles;
+  triangles.reserve(2 * mesh.fan.size());
+  for(std::size_t i = 0; i < n; ++i)
+  {
+    const std::size_t d = mesh.degree(i);
+    for(std::size_t q = 0; q + 1 < d || (closed[i] && q < d); ++q)
+    {
+      std::array<std::size_t, 3> t = {fans[i][q], i, fans[i][(q + 1) % d]};
+      std::sort(t.begin(), t.end());
+      triangles.push_back(t);
+    }
+  }
+  std::sort(triangles.begin(), triangles.end());
+  for(std::size_t a = 0; a < triangles.size();)
+  {
+    std::size_t b = a;
+    while(b < triangles.size() && triangles[b] == triangles[a])
+      ++b;
+    mesh.triangles.push_back(triangles[a]);
+    surface.triangle_weights.push_back(double(b - a) / 3.);
+    a = b;
+  }
+  std::vector<std::array<std::size_t, 3> >().swap(triangles);
+
+  // The graph: the edges of those triangles, per point in increasing order.
+  std::vector<std::vector<std::size_t> > graph(n);
+  for(const auto& t : mesh.triangles)
+    for(int a = 0; a < 3; ++a)
+      for(int b = 0; b < 3; ++b)
+        if(a != b)
+          graph[t[a]].push_back(t[b]);
+  surface.local_fan_begin = std::move(mesh.fan_begin);
+  surface.local_fan = std::move(mesh.fan);
+  mesh.fan_begin.assign(n + 1, 0);
+  for(std::size_t i = 0; i < n; ++i)
+  {
+    std::sort(graph[i].begin(), graph[i].end());
+    graph[i].erase(std::unique(graph[i].begin(), graph[i].end()), graph[i].end());
+    mesh.fan_begin[i + 1] = mesh.fan_begin[i] + graph[i].size();
+  }
+  mesh.fan.resize(mesh.fan_begin[n]);
+  for(std::size_t i = 0; i < n; ++i)
+    std::copy(graph[i].begin(), graph[i].end(), mesh.fan.begin() + std::ptrdiff_t(mesh.fan_begin[i]));
+
+  // The NCC weights moved from the fans to the graph (every fan neighbour is a graph one).
+  surface.ncc = std::move(fan_ncc);
+  std::vector<double> weights(mesh.fan.size(), 0.);
+  for(std::size_t i = 0; i < n; ++i)
+  {
+    const auto first = mesh.fan.begin() + std::ptrdiff_t(mesh.fan_begin[i]);
+    const auto last = mesh.fan.begin() + std::ptrdiff_t(mesh.fan_begin[i + 1]);
+    for(std::size_t q = surface.local_fan_begin[i]; q < surface.local_fan_begin[i + 1]; ++q)
+      weights[std::size_t(std::lower_bound(first, last, surface.local_fan[q]) - mesh.fan.begin())] =
+          surface.ncc.weights[q];
+  }
+  surface.ncc.weights = std::move(weights);
+  return surface;
+}
+
+} // namespace internal
+} // namespace Heat_diffusion
+} // namespace CGAL
+
+#endif // CGAL_HEAT_DIFFUSION_INTERNAL_POINT_SET_SURFACE_H
