@@ -11,8 +11,10 @@
 #include <CGAL/Heat_diffusion/point_set_multiscale_features.h>
 #include <CGAL/Heat_diffusion/point_set_normal_controlled_coordinates.h>
 
+#include <CGAL/Exact_predicates_exact_constructions_kernel.h>
 #include <CGAL/Exact_predicates_inexact_constructions_kernel.h>
 #include <CGAL/Point_set_3.h>
+#include <CGAL/Simple_cartesian.h>
 #include <CGAL/Surface_mesh.h>
 #include <CGAL/compute_average_spacing.h>
 
@@ -444,6 +446,30 @@ void check_neighbor_radius()
                std::invalid_argument, "point 0 has a degenerate neighbourhood");
 }
 
+// The same points in Epeck and Simple_cartesian<double> give the same NS and the same
+// diffusion as in Epick (all is computed in double from the same coordinates).
+template <typename Kernel>
+void check_kernel(const std::string& kernel_name)
+{
+  typedef typename Kernel::Point_3 K_point;
+  const std::vector<Point> points = vertex_points(test_support::load<Mesh>("fandisk.off"));
+  std::vector<K_point> converted;
+  for(const Point& p : points)
+    converted.emplace_back(p.x(), p.y(), p.z());
+  const HD::Point_set_anisotropic_heat_diffusion<std::vector<Point> > reference(points, 8);
+  const HD::Point_set_anisotropic_heat_diffusion<std::vector<K_point> > other(converted, 8);
+  Eigen::VectorXd ns(Eigen::Index(points.size())), other_ns(Eigen::Index(points.size()));
+  for(std::size_t i = 0; i < points.size(); ++i)
+  {
+    ns[Eigen::Index(i)] = reference.normal_controlled_coordinates().normal_signature(i);
+    other_ns[Eigen::Index(i)] = other.normal_controlled_coordinates().normal_signature(i);
+  }
+  CHECK_MESSAGE(ns == other_ns, kernel_name << ": the NS differ from Epick's");
+  CHECK_MESSAGE(reference.diffuse(ns, 10) == other.diffuse(ns, 10), kernel_name << ": F^10 differs from Epick's");
+  const auto n = other.normal_controlled_coordinates().normal(3);
+  CHECK(std::abs(CGAL::to_double(n.squared_length()) - 1.) <= 1e-15);
+}
+
 void run()
 {
   try
@@ -451,6 +477,8 @@ void run()
     check_bad_input();
     check_point_set_3();
     check_neighbor_radius();
+    check_kernel<CGAL::Exact_predicates_exact_constructions_kernel>("Epeck");
+    check_kernel<CGAL::Simple_cartesian<double> >("Simple_cartesian<double>");
     compare_with_mesh("fandisk.off", 8, 0.9);
     compare_with_mesh("armadillo.off", 8, 0.9);
     compare_with_mesh("mech-holes-shark.off", 8, 0.9);
