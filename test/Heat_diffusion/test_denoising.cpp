@@ -5,7 +5,8 @@
 // 2015), Bilateral Normal Filtering (Zheng et al. 2011) and tuned bilateral mesh
 // denoising (Fleishman et al. 2003), run on the same noisy meshes -- CAD with creases
 // (fandisk at 0.1, 0.3 and 0.5 mean edge length of noise, anchor_dense at 0.1),
-// CAD with needle triangles, an organic mesh -- with absolute MAD bounds; validity of
+// CAD with needle triangles, an organic mesh -- with absolute MAD bounds; impulsive noise
+// on fandisk, elephant and head; validity of
 // the result (no self-intersection, same vertices, finite, volume kept); the
 // displacement limit; clean meshes left unchanged, no collapse of thin parts; the
 // untangling of intersecting faces; the volume rescaling per closed component (three
@@ -65,6 +66,15 @@ double mean_angle_deviation(const Mesh& a, const Mesh& b)
     sum += std::acos((std::max)(-1., (std::min)(1., na * nb)));
   }
   return sum / double(a.number_of_faces()) * 180. / CGAL_PI;
+}
+
+// The root mean square distance between corresponding vertices, in mean edge lengths of `a`.
+double rms_distance(const Mesh& a, const Mesh& b)
+{
+  double squares = 0;
+  for(auto v : a.vertices())
+    squares += CGAL::squared_distance(a.point(v), b.point(v));
+  return std::sqrt(squares / double(a.number_of_vertices())) / test_support::mean_edge_length(a);
 }
 
 bool all_finite(const Mesh& mesh)
@@ -209,6 +219,52 @@ void test_random_direction_noise()
   CHECK_MESSAGE(new_intersections <= 10, "elephant, random directions: " << new_intersections
                                                                          << " new self-intersections");
   CHECK_MESSAGE(std::abs(change) < 0.01, "elephant, random directions: volume change " << change);
+}
+
+// Impulsive noise: a tenth or a fifth of the vertices moved along their normals by
+// Gaussian noise of 0.5 or 1 mean edge length (seed 7, as benchmark_denoising), the others
+// left clean. The noise level, a median, reads the clean majority, and the filters
+// stopped on it left the impulses and blurred the detail around them: without the
+// outlier test (remove_impulses()) the results were 6.92 and 18.8 degrees of MAD on
+// fandisk (0.5 on 10 %, 1 on 20 %), 11.5 on elephant (1 on 10 %) and 13.2 on head (0.5 on
+// 20 %), hardly better than the noisy inputs (6.69, 20.2, 11.0, 16.7) or worse. Bounds:
+// the measured values with the test plus about 15 %; BNF at its paper's defaults, the
+// best of the published filters on most of these rows, in the same run; the RMS vertex
+// error below the noisy input's (the outliers move along their rings' normals).
+void test_impulsive_noise()
+{
+  struct Case
+  {
+    const char* file;
+    double fraction, noise, bound;
+  };
+  for(const Case c : {Case{"fandisk.off", 0.1, 0.5, 1.8}, Case{"fandisk.off", 0.2, 1., 5.2},
+                      Case{"elephant.off", 0.1, 1., 3.0}, Case{"head.off", 0.2, 0.5, 9.3}})
+  {
+    const Mesh clean = test_support::load<Mesh>(c.file);
+    Mesh noisy = clean;
+    test_support::add_impulsive_noise(noisy, c.fraction, c.noise, 7);
+    Mesh denoised = noisy;
+    const HD::Denoising_report report = HD::denoise_mesh(denoised);
+    const double noisy_mad = mean_angle_deviation(clean, noisy), mad = mean_angle_deviation(clean, denoised);
+    const double noisy_rms = rms_distance(clean, noisy), rms = rms_distance(clean, denoised);
+    std::cout << c.file << ", impulses of " << c.noise << " mean edge length on " << 100 * c.fraction
+              << " % of the vertices: MAD " << noisy_mad << " -> " << mad << ", RMS " << noisy_rms << " -> " << rms
+              << " mean edge lengths, " << report.impulses << " outliers moved";
+    CHECK(all_finite(denoised));
+    CHECK_MESSAGE(report.impulses > 0, c.file << ": no outlier found");
+    CHECK_MESSAGE(mad < c.bound, c.file << ", impulses: MAD " << mad << " vs the bound " << c.bound);
+    CHECK_MESSAGE(rms < noisy_rms, c.file << ", impulses: RMS " << rms << " vs noisy " << noisy_rms);
+    if(!test_support::under_sanitizers)
+    {
+      Mesh bilateral_normal = noisy;
+      test_support::baselines::bilateral_normal_filtering(bilateral_normal);
+      const double bnf = mean_angle_deviation(clean, bilateral_normal);
+      std::cout << ", BNF " << bnf;
+      CHECK_MESSAGE(mad < bnf, c.file << ", impulses: MAD " << mad << " vs BNF " << bnf);
+    }
+    std::cout << std::endl;
+  }
 }
 
 // Weak noise on CAD parts, where one width of the normal weights for every face (0.45)
@@ -1094,6 +1150,7 @@ void run()
   test_rigid_motion_invariance();
   test_quality();
   test_random_direction_noise();
+  test_impulsive_noise();
   test_weak_noise_on_cad();
   test_clean_meshes();
   test_no_collapse();
