@@ -483,6 +483,10 @@ void run()
     compare_with_mesh("armadillo.off", 8, 0.9);
     compare_with_mesh("mech-holes-shark.off", 8, 0.9);
     compare_with_mesh("elephant.off", 8, 0.8, false);
+    // with k = 10, mst_orient_normals() flips a region of fandisk, which must be refused
+    CHECK_THROWS(HD::Point_set_normal_controlled_coordinates<std::vector<Point> >(
+                     vertex_points(test_support::load<Mesh>("fandisk.off")), 10),
+                 std::invalid_argument, "oriented against its neighbours'");
     check_operators_and_diffusion("fandisk.off", 8);
     compare_features_with_mesh("fandisk.off", 8);
     compare_features_with_mesh("armadillo.off", 8);
