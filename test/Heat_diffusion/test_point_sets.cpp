@@ -443,7 +443,23 @@ void check_neighbor_radius()
   // a radius too small for some point to have two neighbours: an error naming it
   CHECK_THROWS(HD::Point_set_normal_controlled_coordinates<Point_set>(
                    points, 0, CGAL::parameters::neighbor_radius(1e-3 * radius)),
-               std::invalid_argument, "point 0 has a degenerate neighbourhood");
+               std::invalid_argument, "point 0 has 0 neighbour(s) within the neighbor_radius");
+  // without the normals too (the normal estimation then fits planes, not quadrics)
+  std::vector<Point> bare;
+  for(auto index : points)
+    bare.push_back(points.point(index));
+  CHECK_THROWS(HD::Point_set_normal_controlled_coordinates<std::vector<Point> >(
+                   bare, 0, CGAL::parameters::neighbor_radius(1e-3 * radius)),
+               std::invalid_argument, "point 0 has 0 neighbour(s) within the neighbor_radius");
+  const HD::Point_set_normal_controlled_coordinates<std::vector<Point> > estimated(
+      bare, 0, CGAL::parameters::neighbor_radius(1.01 * radius));
+  std::size_t finite = 0;
+  for(std::size_t i = 0; i < estimated.number_of_points(); ++i)
+    finite += std::isfinite(estimated.normal_signature(i)) ? 1 : 0;
+  CHECK(finite == estimated.number_of_points());
+  for(const double bad : {-1., std::numeric_limits<double>::quiet_NaN(), std::numeric_limits<double>::infinity()})
+    CHECK_THROWS(HD::Point_set_normal_controlled_coordinates<Point_set>(points, 8, CGAL::parameters::neighbor_radius(bad)),
+                 std::invalid_argument, "neighbor_radius must be positive and finite");
 }
 
 // The same points in Epeck and Simple_cartesian<double> give the same NS and the same

@@ -93,9 +93,16 @@ Point_set_surface make_point_set_surface(const PointRange& points, unsigned int 
 /// <b>Normals.</b> The tangent plane is that of the given normals (the `normal_map`,
 /// or the normal property of a `CGAL::Point_set_3` that has one), which the NCC is then
 /// measured against. Without normals, the tangent plane is that of
-/// `CGAL::jet_estimate_normals()`, oriented by `CGAL::mst_orient_normals()` (over the
-/// same neighbourhoods), and the NCC is measured against the area-weighted normal of the
-/// point's fan, as for a mesh (the paper's MWAAT normals).
+/// `CGAL::jet_estimate_normals()`, oriented by `CGAL::mst_orient_normals()` (both over
+/// the `k` nearest neighbours; with a radius and `k = 0`, as many as the point with the
+/// fewest neighbours within the radius has), and the NCC is measured against the
+/// area-weighted normal of the point's fan, as for a mesh (the paper's MWAAT normals).
+/// Two fans that hold the same triangle list it in the same orientation exactly when
+/// their normals agree: a normal that disagrees with most of its neighbours' in this
+/// sense is flipped, and if the triangles listed in opposite orientations are then
+/// still more than 1 % of the points (`mst_orient_normals()` crossed a thin part of the
+/// shape and flipped a region: measured on the vertices of CGAL's `elephant.off`), the
+/// construction throws; give the normals then.
 ///
 /// Points are numbered by their position in the range, `0` to `number_of_points() - 1`.
 ///
@@ -144,8 +151,9 @@ public:
   ///   process: a non-finite coordinate or normal, a null normal, fewer than `k + 1`
   ///   points, two points that coincide, a neighbourhood whose projection on the tangent
   ///   plane is collinear (no fan), an estimated normal that `CGAL::mst_orient_normals()`
-  ///   cannot orient (for example on a point set of several connected components: give
-  ///   the normals then); or if `k < 2` without a radius.
+  ///   cannot orient (for example on a point set of several connected components) or
+  ///   orients inconsistently with the fans (see above): give the normals then; if `k < 2`
+  ///   without a radius, or a radius that is negative or not finite.
   ///
   /// Complexity: \f$ O(n \log n) \f$ for the neighbour search, then linear in the number
   /// of points for fixed `k` (parallel over points with TBB).

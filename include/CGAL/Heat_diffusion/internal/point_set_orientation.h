@@ -40,11 +40,13 @@ namespace internal {
 }
 
 // Unit normals of the points, in the normalised frame, by CGAL::jet_estimate_normals()
-// and oriented by CGAL::mst_orient_normals(), over the same neighbourhoods (k, radius in
-// the normalised frame). Throws, naming a point, where a normal is not usable or cannot
-// be oriented.
+// and oriented by CGAL::mst_orient_normals(), over the k nearest neighbours. (Not over
+// a radius: Point_set_processing_3 limits a radius search to the first k points the
+// kd-tree meets, not the nearest, and without a limit its neighbourhoods can be large
+// enough for mst_orient_normals() to cross thin parts; both made fandisk fail.)
+// Throws, naming a point, where a normal is not usable or cannot be oriented.
 inline std::vector<Eigen::Vector3d> estimate_oriented_normals(const std::vector<Eigen::Vector3d>& points,
-                                                              std::size_t k, double radius)
+                                                              std::size_t k)
 {
   typedef CGAL::Exact_predicates_inexact_constructions_kernel K;
   typedef std::tuple<K::Point_3, K::Vector_3, std::size_t> Item;
@@ -54,11 +56,11 @@ inline std::vector<Eigen::Vector3d> estimate_oriented_normals(const std::vector<
     items[i] = Item(K::Point_3(points[i].x(), points[i].y(), points[i].z()), K::Vector_3(0, 0, 0), i);
   const auto np = CGAL::parameters::point_map(CGAL::Nth_of_tuple_property_map<0, Item>())
                       .normal_map(CGAL::Nth_of_tuple_property_map<1, Item>())
-                      .neighbor_radius(radius)
-                      // a quadric needs 6 points: the point and 5 neighbours
-                      .degree_fitting(k >= 5 || radius > 0 ? 2 : 1);
-  // (jet_estimate_normals() counts the point itself among its k)
-  CGAL::jet_estimate_normals<CGAL::Parallel_if_available_tag>(items, unsigned(k + 1), np);
+                      // a quadric needs 6 points: the point and 5 neighbours; a plane 3
+                      .degree_fitting(k >= 5 ? 2 : 1);
+  // (Point_set_processing_3 counts the point itself among its k)
+  const unsigned psp_k = unsigned(k + 1);
+  CGAL::jet_estimate_normals<CGAL::Parallel_if_available_tag>(items, psp_k, np);
   for(const Item& item : items)
   {
     const K::Vector_3& v = std::get<1>(item);
@@ -67,7 +69,7 @@ inline std::vector<Eigen::Vector3d> estimate_oriented_normals(const std::vector<
       throw_point_error(std::get<2>(item), "has no usable estimated normal (its neighbourhood is degenerate); "
                                            "give normals with the normal_map named parameter");
   }
-  const auto unoriented = CGAL::mst_orient_normals(items, unsigned(k + 1), np);
+  const auto unoriented = CGAL::mst_orient_normals(items, psp_k, np);
   if(unoriented != items.end())
   {
     std::ostringstream os;

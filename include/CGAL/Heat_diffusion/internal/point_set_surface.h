@@ -282,8 +282,10 @@ inline Point_set_surface make_point_set_surface(std::vector<Eigen::Vector3d> use
   Indexed_mesh& mesh = surface.mesh;
   if(n == 0)
     return surface;
-  if(options.neighbor_radius > 0 ? !std::isfinite(options.neighbor_radius) : options.k < 2)
-    throw_invalid_input("the neighbour count k must be at least 2 (or a finite neighbor_radius given)");
+  if(!(options.neighbor_radius >= 0) || !std::isfinite(options.neighbor_radius))
+    throw_invalid_input("neighbor_radius must be positive and finite (or 0: the k nearest neighbours)");
+  if(options.neighbor_radius == 0 && options.k < 2)
+    throw_invalid_input("the neighbour count k must be at least 2 (or a neighbor_radius given)");
   if(options.neighbor_radius <= 0 && n < options.k + 1)
   {
     std::ostringstream os;
@@ -316,6 +318,13 @@ inline Point_set_surface make_point_set_surface(std::vector<Eigen::Vector3d> use
   const double radius = std::ldexp(options.neighbor_radius, mesh.scale_exponent);
 
   const std::vector<std::vector<std::size_t> > neighbours = find_neighbours(p, options.k, radius);
+  for(std::size_t i = 0; i < n; ++i)
+    if(neighbours[i].size() < 2)  // (only with a radius: else there are k >= 2)
+    {
+      std::ostringstream os;
+      os << "has " << neighbours[i].size() << " neighbour(s) within the neighbor_radius; a fan needs 2";
+      throw_point_error(i, os.str());
+    }
   std::vector<Eigen::Vector3d> normals;
   if(given_normals)
   {
@@ -324,7 +333,17 @@ inline Point_set_surface make_point_set_surface(std::vector<Eigen::Vector3d> use
       v.normalize();
   }
   else
-    normals = estimate_oriented_normals(p, options.k, radius);
+  {
+    // (with a radius and no limit: as many neighbours as the point with the fewest has)
+    std::size_t k = options.k;
+    if(k == 0)
+    {
+      k = n;
+      for(const auto& list : neighbours)
+        k = (std::min)(k, list.size());
+    }
+    normals = estimate_oriented_normals(p, k);
+  }
 
   // The fans, the NCC normals and the Voronoi areas, point by point.
   std::vector<std::vector<std::size_t> > fans(n);
@@ -334,7 +353,7 @@ inline Point_set_surface make_point_set_surface(std::vector<Eigen::Vector3d> use
   Point_problems problems(n);
   parallel_for(n, [&](std::size_t i) {
     std::vector<std::size_t>& fan = fans[i];
-    const int kind = neighbours[i].size() < 2 ? 0 : local_delaunay_fan(p, i, neighbours[i], normals[i], fan);
+    const int kind = local_delaunay_fan(p, i, neighbours[i], normals[i], fan);
     if(kind == 0)
     {
       problems.code[i] = 1;
