@@ -310,6 +310,9 @@ void check_bad_input()
     for(int y = 0; y < 6; ++y)
       grid.emplace_back(x, y, 0.1 * x * y);
   CHECK(NCC(grid, 8).number_of_points() == 36);
+  CHECK(NCC(Points(), 8).number_of_points() == 0);
+  CHECK_THROWS(HD::Point_set_anisotropic_heat_diffusion<Points>(Points(), 8), std::invalid_argument,
+               "the point set is empty");
   CHECK_THROWS(NCC(grid, 36), std::invalid_argument, "fewer than k + 1");
   CHECK_THROWS(NCC(grid, 1), std::invalid_argument, "at least 2");
   {
