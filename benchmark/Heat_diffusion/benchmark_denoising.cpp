@@ -27,8 +27,9 @@
 // normals of the result and of the clean mesh (the grids are searched for the lowest
 // MAD); RMS, the root mean square vertex distance to the clean mesh in mean edge
 // lengths, and its tangential part (the error's component in the clean mesh's tangent
-// plane at the vertex: vertices slid along the surface); the volume change in percent (closed meshes; the noisy input's row also gives
-// the standard deviation of the change that the noise itself makes, set_volume_spread());
+// plane at the vertex: vertices slid along the surface); the volume change in percent
+// (closed meshes; the noisy input's row also gives the standard deviation of the change
+// that the noise itself makes, set_volume_spread());
 // the faces whose normal is flipped (more than 90 degrees from the clean one); the
 // intersecting face pairs beyond those of the clean mesh; the time of the chosen setting.
 //
@@ -325,7 +326,7 @@ struct Noise
   {
     return kind == none ? "none" : kind == normal ? "normal" : kind == random ? "random" : "impulsive";
   }
-  std::string family() const { return kind == impulsive ? "impulsive" : "Gaussian"; }
+  std::string family() const { return kind == none ? "no" : kind == impulsive ? "impulsive" : "Gaussian"; }
   std::string label() const
   {
     return kind == impulsive ? format(level) + " on " + format(100. * fraction) + " %" : format(level);
@@ -402,9 +403,10 @@ int main(int argc, char** argv)
   std::vector<Noise> inputs;
   if(clean)
     inputs.push_back({Noise::none, 0., 0.});
+  const std::vector<double> gaussian_levels =
+      !noises.empty() ? noises : quick ? std::vector<double>{0.3, 0.5} : std::vector<double>{0.1, 0.2, 0.3, 0.5};
   if(!impulsive_only)
-    for(double level : noises.empty() ? (quick ? std::vector<double>{0.3, 0.5} : std::vector<double>{0.1, 0.2, 0.3, 0.5})
-                                      : noises)
+    for(double level : gaussian_levels)
     {
       inputs.push_back({Noise::normal, level, 1.});
       if(!normal_only)
@@ -424,8 +426,8 @@ int main(int argc, char** argv)
   std::size_t closed_noisy_rows = 0;
   double largest_input_volume_deviation = 0;  // in standard deviations (set_volume_spread())
 
-  std::cout << "| mesh | kind | half | noise | direction | method | MAD | RMS | tangential RMS | volume % | flipped | new SI "
-               "| time s | setting |\n"
+  std::cout << "| mesh | kind | half | noise | direction | method | MAD | RMS | tangential RMS | volume % | flipped "
+               "| new SI | time s | setting |\n"
             << "|---|---|---|---|---|---|---|---|---|---|---|---|---|---|\n";
   for(const Set_entry& entry : set)
   {

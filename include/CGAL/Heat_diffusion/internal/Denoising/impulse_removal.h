@@ -34,8 +34,9 @@ namespace internal {
 // on v_i gives h_i and r_i of about d, with the same sign, and leaves rho_i as it is
 // (the neighbours are where they were); a crease or a corner folds the ring itself, so
 // that rho_i grows with h_i, and a vertex beside a crease has a small h_i (its
-// residual, from the heights of the crease vertices around it, is not an impulse). A
-// vertex is an outlier if
+// residual, from the heights of the crease vertices around it, is not an impulse: on
+// r_i alone, 1702 of the clean fandisk's 6475 vertices were outliers). A vertex is an
+// outlier if
 //   |h_i| > impulse_flatness_ratio rho_i,   |h_i| > impulse_floor e_i,
 //   |r_i| > impulse_scale_ratio s,           r_i h_i > 0,
 // e_i the mean length of its edges and s the median of |r_j| / 0.6745 over the interior
