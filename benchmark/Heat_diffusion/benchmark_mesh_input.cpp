@@ -10,8 +10,10 @@
 //    CGAL::IO::read_polygon_mesh), in this process, alternating, R runs each: the
 //    median seconds, their ratio, and whether the two meshes are identical;
 //  - R runs of `heat_diffusion features FILE -k 10 --kernel local --json` under
-//    /usr/bin/time -v: the tool's stages (its --json timings), the wall time and the
-//    peak memory of the whole command, each run and the medians.
+//    /usr/bin/time -v, alternating with R runs of the same command with
+//    `--kernel-tolerance 1e-4`, the local kernel's earlier default accuracy: the
+//    tool's stages (its --json timings), the wall time and the peak memory of the whole
+//    command, each run and the medians, and the ratios of the medians (default / 1e-4).
 // The machine may be shared: compare within a run.
 //
 // Usage: benchmark_mesh_input [TOOL] [--dir DIR] [--levels L] [--repeat R] [--data DATA_DIR]
@@ -84,11 +86,17 @@ double json_timing(const std::string& text, const std::string& key)
   return at == std::string::npos ? -1 : std::atof(text.c_str() + at + key.size() + 3);
 }
 
-Tool_run run_tool(const std::string& tool, const std::string& input, const std::string& prefix)
+// The settings the tool runs with: its defaults, and the local kernel's accuracy before
+// version 1.1.
+const char* const setting_names[2] = {"default", "1e-4"};
+const char* const setting_options[2] = {"", " --kernel-tolerance 1e-4"};
+
+Tool_run run_tool(const std::string& tool, const std::string& input, const std::string& prefix, int setting)
 {
   const std::string json = prefix + ".json", time_log = prefix + ".time";
-  const std::string command = "/usr/bin/time -v " + tool + " features '" + input + "' -k 10 --kernel local --json --quiet -o '" +
-                              prefix + "' > '" + json + "' 2> '" + time_log + "'";
+  const std::string command = "/usr/bin/time -v " + tool + " features '" + input + "' -k 10 --kernel local" +
+                              setting_options[setting] + " --json --quiet -o '" + prefix + "' > '" + json + "' 2> '" +
+                              time_log + "'";
   Tool_run run;
   if(std::system(command.c_str()) != 0)
     return run;
@@ -192,34 +200,48 @@ int main(int argc, char** argv)
                 "  ratio %.1f;  meshes identical: %s\n",
                 n, repeat, median(fast), median(cgal), median(cgal) / median(fast), same ? "yes" : "NO");
 
-    std::printf("  %s features FILE -k 10 --kernel local --json (seconds; peak GiB):\n", tool.c_str());
-    std::printf("  %-6s %8s %12s %10s %9s %7s %8s %8s\n", "run", "read", "ncc+A_t", "steps", "features", "write",
-                "wall", "peak");
-    std::vector<std::vector<double>> columns(7);
+    std::printf("  %s features FILE -k 10 --kernel local [--kernel-tolerance 1e-4] --json (seconds; peak GiB):\n",
+                tool.c_str());
+    std::printf("  %-6s %-8s %8s %12s %10s %9s %7s %8s %8s\n", "run", "setting", "read", "ncc+A_t", "steps",
+                "features", "write", "wall", "peak");
+    std::vector<std::vector<double>> columns[2] = {std::vector<std::vector<double>>(7),
+                                                   std::vector<std::vector<double>>(7)};
     for(int r = 0; r < repeat; ++r)
-    {
-      const Tool_run run = run_tool(tool, file, dir + "/benchmark_mesh_input_out");
-      if(!run.ok)
+      for(int setting = 0; setting < 2; ++setting)
       {
-        std::printf("  %-6d (the tool failed: see %s/benchmark_mesh_input_out.json and .time)\n", r + 1, dir.c_str());
-        continue;
+        const Tool_run run = run_tool(tool, file, dir + "/benchmark_mesh_input_out", setting);
+        if(!run.ok)
+        {
+          std::printf("  %-6d %-8s (the tool failed: see %s/benchmark_mesh_input_out.json and .time)\n", r + 1,
+                      setting_names[setting], dir.c_str());
+          continue;
+        }
+        std::printf("  %-6d %-8s %8.2f %12.2f %10.2f %9.2f %7.2f %8.2f %8.2f\n", r + 1, setting_names[setting],
+                    run.stages[0], run.stages[1], run.stages[2], run.stages[3], run.stages[4], run.wall, run.peak_gib);
+        for(int s = 0; s < 5; ++s)
+          columns[setting][s].push_back(run.stages[s]);
+        columns[setting][5].push_back(run.wall);
+        columns[setting][6].push_back(run.peak_gib);
       }
-      std::printf("  %-6d %8.2f %12.2f %10.2f %9.2f %7.2f %8.2f %8.2f\n", r + 1, run.stages[0], run.stages[1],
-                  run.stages[2], run.stages[3], run.stages[4], run.wall, run.peak_gib);
-      for(int s = 0; s < 5; ++s)
-        columns[s].push_back(run.stages[s]);
-      columns[5].push_back(run.wall);
-      columns[6].push_back(run.peak_gib);
-    }
-    if(columns[0].empty())
+    if(columns[0][0].empty() || columns[1][0].empty())
     {
-      std::printf("  no run of the tool succeeded: no medians\n");
+      std::printf("  no run of the tool succeeded with one of the settings: no medians\n");
       failed = true;
       continue;
     }
-    std::printf("  %-6s %8.2f %12.2f %10.2f %9.2f %7.2f %8.2f %8.2f\n", "median", median(columns[0]),
-                median(columns[1]), median(columns[2]), median(columns[3]), median(columns[4]), median(columns[5]),
-                median(columns[6]));
+    std::array<double, 7> medians[2];
+    for(int setting = 0; setting < 2; ++setting)
+    {
+      for(int c = 0; c < 7; ++c)
+        medians[setting][std::size_t(c)] = median(columns[setting][c]);
+      const std::array<double, 7>& m = medians[setting];
+      std::printf("  %-6s %-8s %8.2f %12.2f %10.2f %9.2f %7.2f %8.2f %8.2f\n", "median", setting_names[setting], m[0],
+                  m[1], m[2], m[3], m[4], m[5], m[6]);
+    }
+    std::printf("  %-6s %-8s %8.2f %12.2f %10.2f %9.2f %7.2f %8.2f %8.2f\n", "ratio", "def/1e-4",
+                medians[0][0] / medians[1][0], medians[0][1] / medians[1][1], medians[0][2] / medians[1][2],
+                medians[0][3] / medians[1][3], medians[0][4] / medians[1][4], medians[0][5] / medians[1][5],
+                medians[0][6] / medians[1][6]);
     std::printf("  (CGAL's reader on this file in this run: %.2f s)\n", median(cgal));
   }
   return failed ? 1 : 0;

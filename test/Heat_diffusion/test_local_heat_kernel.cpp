@@ -13,10 +13,12 @@
 #include <CGAL/Heat_diffusion/internal/heat_operators.h>
 #include <CGAL/Heat_diffusion/internal/local_heat_kernel.h>
 #include <CGAL/Heat_diffusion/internal/sparse_cholesky.h>
+#include <CGAL/Heat_diffusion/multiscale_features.h>
 
 #include <CGAL/Exact_predicates_inexact_constructions_kernel.h>
 #include <CGAL/Surface_mesh.h>
 
+#include "kernel_accuracy.h"
 #include "test_support.h"
 
 #include <algorithm>
@@ -35,6 +37,8 @@ typedef HD::Anisotropic_heat_diffusion<Mesh> Diffusion;
 typedef Eigen::SparseMatrix<double> Sparse_matrix;
 
 const std::vector<double> times = {0.5, 1., 2., 4.};
+// The local kernel's earlier default tolerance (three poles), kept reachable.
+const double previous_tolerance = 1e-4;
 
 // Columns of exp(-t B^-1 L) B^-1 for `sources` at every t of `times`, by Crank-Nicolson
 // steps of size dt after four implicit Euler steps of dt / 2 (Rannacher's start, which
@@ -121,15 +125,22 @@ std::size_t check_heat_balance(const Local_kernel& kernel, const Sparse_matrix& 
 // partition of the vertices into compact groups.
 void check_rational_approximation_and_clusters()
 {
-  double worst = 0;
-  for(int e = -8000; e <= 6000; ++e)
+  for(const HD::internal::Rational_exponential* r :
+      {&HD::internal::three_pole_exponential(), &HD::internal::two_pole_exponential()})
   {
-    const double x = e == -8000 ? 0. : std::pow(10., e / 1000.);
-    worst = (std::max)(worst, std::abs(HD::internal::rational_exponential(x) - std::exp(-x)));
+    double worst = 0;
+    for(int e = -8000; e <= 6000; ++e)
+    {
+      const double x = e == -8000 ? 0. : std::pow(10., e / 1000.);
+      worst = (std::max)(worst, std::abs((*r)(x) - std::exp(-x)));
+    }
+    std::cout << "rational approximation of exp(-x) with " << r->number_of_poles
+              << " poles on [0, 1e6]: max error " << worst << " (stated " << r->maximum_error << ")" << std::endl;
+    // the stated error, which chooses the approximation, is the measured one
+    CHECK_MESSAGE(worst <= r->maximum_error * 1.02 && worst >= r->maximum_error * 0.9,
+                  r->number_of_poles << " poles: rational approximation error " << worst);
+    CHECK(std::abs((*r)(1e12)) < 1e-11);
   }
-  std::cout << "rational approximation of exp(-x) on [0, 1e6]: max error " << worst << std::endl;
-  CHECK_MESSAGE(worst <= 2e-6, "rational approximation error " << worst);
-  CHECK(std::abs(HD::internal::rational_exponential(1e12)) < 1e-11);
 
   const Mesh mesh = test_support::load<Mesh>("fandisk.off");
   const HD::Normal_controlled_coordinates<Mesh> ncc(mesh);
@@ -192,65 +203,72 @@ void check_columns(const std::string& name, double sigma)
 
   std::size_t enlarged_columns = 0;
   for(std::size_t ti = 0; ti < times.size(); ++ti)
-  {
-    const double t = times[ti];
-    const Eigen::MatrixXd reference = (4. * fine[ti] - coarse[ti]) / 3.;
-    const HD::internal::Local_heat_kernel local(indexed, L, B, t);
-    const HD::internal::Local_heat_kernel lumped(indexed, L, B, t, HD::internal::Local_heat_kernel::default_tolerance,
-                                                 HD::internal::Local_kernel_mass::lumped);
-    auto workspace = local.make_workspace();
-    double reference_error = 0, local_error = 0, lumped_error = 0, truncated_error = 0, truncated_min = 1e300;
-    std::size_t patch_min = n, patch_max = 0, enlargements_max = 0, exact_region_min = n, exact_region_max = 0;
-    std::size_t region_mismatch = 0;
-    for(std::size_t s = 0; s < sources.size(); ++s)
+    for(const double tolerance : {previous_tolerance, HD::defaults::local_kernel_tolerance})
     {
-      const std::size_t j = sources[s];
-      const Eigen::VectorXd exact = reference.col(Eigen::Index(s));
-      reference_error = (std::max)(reference_error, relative_error(fine[ti].col(Eigen::Index(s)), exact));
-      local_error = (std::max)(local_error, relative_error(local_column(local, j, n, workspace), exact));
-      patch_min = (std::min)(patch_min, Local_kernel::patch(workspace).size());
-      patch_max = (std::max)(patch_max, Local_kernel::patch(workspace).size());
-      enlargements_max = (std::max)(enlargements_max, Local_kernel::enlargements(workspace));
-      lumped_error = (std::max)(lumped_error, relative_error(local_column(lumped, j, n, workspace), exact));
-      Eigen::VectorXd truncated(static_cast<Eigen::Index>(n));
-      for(std::size_t i = 0; i < n; ++i)
-        truncated[Eigen::Index(i)] = spectral.kernel(i, j, t);
-      const double e = relative_error(truncated, exact);
-      truncated_error = (std::max)(truncated_error, e);
-      truncated_min = (std::min)(truncated_min, e);
-      // the heat region of the local column is that of the exact one (up to a vertex
-      // whose value is within the error of the threshold)
-      const std::size_t region = region_size(indexed, j, exact, t);
-      const std::size_t local_region = region_size(indexed, j, local_column(local, j, n, workspace), t);
-      region_mismatch = (std::max)(region_mismatch, std::size_t(std::abs(double(region) - double(local_region))));
-      exact_region_min = (std::min)(exact_region_min, region);
-      exact_region_max = (std::max)(exact_region_max, region);
+      const double t = times[ti];
+      const Eigen::MatrixXd reference = (4. * fine[ti] - coarse[ti]) / 3.;
+      const HD::internal::Local_heat_kernel local(indexed, L, B, t, tolerance);
+      const HD::internal::Local_heat_kernel lumped(indexed, L, B, t, tolerance, HD::internal::Local_kernel_mass::lumped);
+      const std::string case_label = label + ", t = " + std::to_string(t).substr(0, 3) + ", tolerance " +
+                                     std::to_string(tolerance).substr(0, 6) + " (" +
+                                     std::to_string(local.exponential().number_of_poles) + " poles)";
+      auto workspace = local.make_workspace();
+      double reference_error = 0, local_error = 0, lumped_error = 0, truncated_error = 0, truncated_min = 1e300;
+      std::size_t patch_min = n, patch_max = 0, enlargements_max = 0, exact_region_min = n, exact_region_max = 0;
+      std::size_t region_mismatch = 0;
+      for(std::size_t s = 0; s < sources.size(); ++s)
+      {
+        const std::size_t j = sources[s];
+        const Eigen::VectorXd exact = reference.col(Eigen::Index(s));
+        reference_error = (std::max)(reference_error, relative_error(fine[ti].col(Eigen::Index(s)), exact));
+        local_error = (std::max)(local_error, relative_error(local_column(local, j, n, workspace), exact));
+        patch_min = (std::min)(patch_min, Local_kernel::patch(workspace).size());
+        patch_max = (std::max)(patch_max, Local_kernel::patch(workspace).size());
+        enlargements_max = (std::max)(enlargements_max, Local_kernel::enlargements(workspace));
+        lumped_error = (std::max)(lumped_error, relative_error(local_column(lumped, j, n, workspace), exact));
+        Eigen::VectorXd truncated(static_cast<Eigen::Index>(n));
+        for(std::size_t i = 0; i < n; ++i)
+          truncated[Eigen::Index(i)] = spectral.kernel(i, j, t);
+        const double e = relative_error(truncated, exact);
+        truncated_error = (std::max)(truncated_error, e);
+        truncated_min = (std::min)(truncated_min, e);
+        // the heat region of the local column is that of the exact one (up to a vertex
+        // whose value is within the error of the threshold)
+        const std::size_t region = region_size(indexed, j, exact, t);
+        const std::size_t local_region = region_size(indexed, j, local_column(local, j, n, workspace), t);
+        region_mismatch = (std::max)(region_mismatch, std::size_t(std::abs(double(region) - double(local_region))));
+        exact_region_min = (std::min)(exact_region_min, region);
+        exact_region_max = (std::max)(exact_region_max, region);
+      }
+      // a column depends on its cluster only, not on what the workspace computed before
+      // (the parallel construction of A_t relies on it): bit-identical in a fresh one
+      for(std::size_t s = 0; s < sources.size(); ++s)
+      {
+        const Eigen::VectorXd reused = local_column(local, sources[s], n, workspace);
+        auto fresh_workspace = local.make_workspace();
+        const Eigen::VectorXd fresh = local_column(local, sources[s], n, fresh_workspace);
+        CHECK_MESSAGE((reused - fresh).cwiseAbs().maxCoeff() == 0,
+                      case_label << ": column " << sources[s] << " depends on the workspace's history");
+      }
+      enlarged_columns += check_heat_balance(local, B, label);
+      std::cout << case_label << ": column error, local " << local_error << ", lumped mass " << lumped_error
+                << ", truncated m = 150 " << truncated_min << " .. " << truncated_error
+                << " (reference error <= " << reference_error << "); patches " << patch_min << " .. " << patch_max
+                << " vertices, patch enlargements <= " << enlargements_max << ", exact heat regions "
+                << exact_region_min << " .. " << exact_region_max << std::endl;
+      CHECK_MESSAGE(reference_error <= 1e-4, case_label << ": the reference is off by " << reference_error);
+      // Three poles and the earlier default: the column within 1e-3 of the exact one
+      // (measured at most 9.8e-5); two poles and the default tolerance: within 1e-2
+      // (measured at most 7.0e-3), the error of the two-pole approximation on the column.
+      const bool previous = tolerance == previous_tolerance;
+      CHECK_MESSAGE(local_error <= (previous ? 1e-3 : 1e-2), case_label << ": local kernel error " << local_error);
+      CHECK_MESSAGE(region_mismatch <= 1, case_label << ": heat regions differ by " << region_mismatch);
+      // the measurements behind the documented choices: lumping the mass and truncating
+      // the spectrum each cost far more than the local kernel's tolerance
+      CHECK_MESSAGE(lumped_error > (previous ? 10 : 2) * local_error, case_label << ": lumped " << lumped_error);
+      if(t <= 1.)
+        CHECK_MESSAGE(truncated_min > (previous ? 100 : 50) * local_error, case_label << ": truncated " << truncated_min);
     }
-    // a column depends on its cluster only, not on what the workspace computed before
-    // (the parallel construction of A_t relies on it): bit-identical in a fresh one
-    for(std::size_t s = 0; s < sources.size(); ++s)
-    {
-      const Eigen::VectorXd reused = local_column(local, sources[s], n, workspace);
-      auto fresh_workspace = local.make_workspace();
-      const Eigen::VectorXd fresh = local_column(local, sources[s], n, fresh_workspace);
-      CHECK_MESSAGE((reused - fresh).cwiseAbs().maxCoeff() == 0, label << ", t = " << t << ": column " << sources[s]
-                                                                 << " depends on the workspace's history");
-    }
-    enlarged_columns += check_heat_balance(local, B, label);
-    std::cout << label << ", t = " << t << ": column error, local " << local_error << ", lumped mass "
-              << lumped_error << ", truncated m = 150 " << truncated_min << " .. " << truncated_error
-              << " (reference error <= " << reference_error << "); patches " << patch_min << " .. " << patch_max
-              << " vertices, patch enlargements <= " << enlargements_max << ", exact heat regions " << exact_region_min
-              << " .. " << exact_region_max << std::endl;
-    CHECK_MESSAGE(reference_error <= 1e-4, label << ", t = " << t << ": the reference is off by " << reference_error);
-    CHECK_MESSAGE(local_error <= 1e-3, label << ", t = " << t << ": local kernel error " << local_error);
-    CHECK_MESSAGE(region_mismatch <= 1, label << ", t = " << t << ": heat regions differ by " << region_mismatch);
-    // the measurements behind the documented choices: lumping the mass and truncating
-    // the spectrum each cost far more than the local kernel's tolerance
-    CHECK_MESSAGE(lumped_error > 10 * local_error, label << ", t = " << t << ": lumped " << lumped_error);
-    if(t <= 1.)
-      CHECK_MESSAGE(truncated_min > 100 * local_error, label << ", t = " << t << ": truncated " << truncated_min);
-  }
   // The enlargement of the patches, exercised on every mesh: at the default tolerance
   // few columns need it (none on armadillo, whose patch metric is capped where the
   // triangles are large); at a tenth of it some do. (Not tighter: the heat balance is
@@ -306,6 +324,60 @@ void check_diffusion(const std::string& name, double sigma)
   test_support::check_diffusion_product(diffusion, f0, label);
 }
 
+// The accuracy budget of the local kernel's default tolerance: A_t (balanced) from the
+// default kernel against A_t from the reference kernel (tolerance 2e-6, three poles),
+// next to what the heat regions leave out of each kernel column (13 to 14 % of its heat on
+// these meshes). The kernel's error on A_t must stay a small fraction of that truncation,
+// which defines A_t: its mean at most a fiftieth of the truncation's mean, its 99th
+// percentile about the tolerance; F^10 of the Normal Signature within 1e-3 of what the 10
+// steps change; the features at k = 10 the same. The earlier default (1e-4, three poles)
+// stays within 1e-5 of the reference.
+void check_operator_accuracy(const std::string& name)
+{
+  const Mesh mesh = test_support::load<Mesh>(name);
+  const auto local = HD::parameters::kernel_method(HD::Heat_kernel_method::local);
+  const Diffusion reference(mesh, local.local_kernel_tolerance(kernel_accuracy::reference_tolerance));
+  const Diffusion reference_columns(mesh, local.local_kernel_tolerance(kernel_accuracy::reference_tolerance)
+                                              .operator_normalization(HD::Operator_normalization::columns));
+  const kernel_accuracy::Summary truncation = kernel_accuracy::heat_outside_regions(reference_columns);
+  const Diffusion by_default(mesh, local);
+  const Diffusion previous(mesh, local.local_kernel_tolerance(previous_tolerance));
+  const kernel_accuracy::Summary error =
+      kernel_accuracy::column_distances(by_default.operator_matrix(), reference.operator_matrix());
+  const kernel_accuracy::Summary previous_error =
+      kernel_accuracy::column_distances(previous.operator_matrix(), reference.operator_matrix());
+
+  std::map<Vertex, double> signature;
+  Eigen::VectorXd f0(Eigen::Index(reference.number_of_vertices()));
+  for(Vertex v : mesh.vertices())
+  {
+    signature[v] = reference.normal_controlled_coordinates().normal_signature(v);
+    f0[Eigen::Index(reference.vertex_index(v))] = signature[v];
+  }
+  const Eigen::VectorXd f10_reference = reference.diffuse(f0, 10), f10 = by_default.diffuse(f0, 10);
+  const double field_error = (f10 - f10_reference).norm() / (f10_reference - f0).norm();
+  const auto features = [&](const Diffusion& diffusion) {
+    const auto found = HD::detect_multiscale_features(diffusion, boost::make_assoc_property_map(signature), {10});
+    return std::make_pair(found[0].convex, found[0].concave);
+  };
+  const auto reference_features = features(reference);
+
+  std::cout << name << ": heat outside the regions, mean " << truncation.mean << " (largest " << truncation.largest
+            << "); A_t column distance to the reference at the default tolerance: mean " << error.mean
+            << ", 99th percentile " << error.percentile_99 << ", largest " << error.largest
+            << "; at 1e-4: mean " << previous_error.mean << ", largest " << previous_error.largest
+            << "; F^10 of the NS " << field_error << std::endl;
+  CHECK_MESSAGE(error.mean <= 0.02 * truncation.mean, name << ": mean A_t error " << error.mean);
+  CHECK_MESSAGE(error.percentile_99 <= 1.5 * HD::defaults::local_kernel_tolerance,
+                name << ": 99th percentile " << error.percentile_99);
+  CHECK_MESSAGE(previous_error.mean <= 1e-5, name << ": mean A_t error at 1e-4 " << previous_error.mean);
+  CHECK_MESSAGE(field_error <= 1e-3, name << ": F^10 error " << field_error);
+  CHECK_MESSAGE(features(by_default) == reference_features, name << ": the features at k = 10 differ");
+  CHECK(!reference_features.first.empty());
+  // the truncation is what the comparison is against: far more than the kernel's error
+  CHECK_MESSAGE(truncation.mean > 0.05, name << ": heat outside the regions " << truncation.mean);
+}
+
 // The kernel choice through the API: defaults, accessors, rejections, the free function.
 void check_interface()
 {
@@ -325,6 +397,13 @@ void check_interface()
                "time must be positive");
   CHECK_THROWS(Diffusion(mesh, HD::parameters::combine(local, HD::parameters::time(std::numeric_limits<double>::infinity()))),
                std::invalid_argument, "time must be positive");
+  for(double tolerance : {0., 1., -1e-3, std::numeric_limits<double>::quiet_NaN()})
+    CHECK_THROWS(Diffusion(mesh, HD::parameters::combine(local, HD::parameters::local_kernel_tolerance(tolerance))),
+                 std::invalid_argument, "local_kernel_tolerance must be in (0, 1)");
+  // the tolerance chooses the approximation: two poles where the heat balance can
+  // still check the tolerance, three below
+  CHECK(Local_kernel::exponential_for(HD::defaults::local_kernel_tolerance).number_of_poles == 2);
+  CHECK(Local_kernel::exponential_for(previous_tolerance).number_of_poles == 3);
 
   // the free function with the local method equals the class
   std::map<Vertex, double> in, out, out2;
@@ -339,15 +418,21 @@ void check_interface()
   CHECK_MESSAGE(worst == 0, "free function vs class: " << worst);
 
   // the local and spectral A_t agree where the truncated kernel is accurate: a small
-  // mesh with every eigenpair (m = n), at t = 1
+  // mesh with every eigenpair (m = n), at t = 1: at the earlier default tolerance within
+  // 1e-3, at the default within 1e-2 (the two-pole approximation's error on the columns)
   const Diffusion full(mesh, HD::parameters::combine(HD::parameters::number_of_eigenpairs(mesh.number_of_vertices()),
                                                      HD::parameters::sigma(1.)));
-  const Diffusion full_local(mesh, HD::parameters::combine(local, HD::parameters::sigma(1.)));
-  const Sparse_matrix difference = full.operator_matrix() - full_local.operator_matrix();
-  const double operator_difference = difference.norm() / full.operator_matrix().norm();
-  std::cout << "sphere966: A_t local vs all " << mesh.number_of_vertices()
-            << " eigenpairs, relative difference " << operator_difference << std::endl;
-  CHECK_MESSAGE(operator_difference <= 1e-3, "A_t local vs full spectral: " << operator_difference);
+  for(const double tolerance : {previous_tolerance, HD::defaults::local_kernel_tolerance})
+  {
+    const Diffusion full_local(mesh, HD::parameters::combine(local, HD::parameters::sigma(1.),
+                                                             HD::parameters::local_kernel_tolerance(tolerance)));
+    const Sparse_matrix difference = full.operator_matrix() - full_local.operator_matrix();
+    const double operator_difference = difference.norm() / full.operator_matrix().norm();
+    std::cout << "sphere966: A_t local (tolerance " << tolerance << ") vs all " << mesh.number_of_vertices()
+              << " eigenpairs, relative difference " << operator_difference << std::endl;
+    CHECK_MESSAGE(operator_difference <= (tolerance == previous_tolerance ? 1e-3 : 1e-2),
+                  "A_t local vs full spectral: " << operator_difference);
+  }
 }
 
 void run()
@@ -361,6 +446,8 @@ void run()
     check_diffusion("fandisk.off", 1.);
     check_diffusion("fandisk.off", 0.1);
     check_diffusion("armadillo.off", 1.);
+    check_operator_accuracy("fandisk.off");
+    check_operator_accuracy("armadillo.off");
     check_interface();
   }
   catch(const std::exception& e)

@@ -114,7 +114,8 @@ inline void adapt_denoise_spec(const Arguments& args, Diffusion_spec&)
     throw Usage_error("--method must be normal_filtering or signature_diffusion, not '" + method_name + "'");
   const bool filtering = method_name == "normal_filtering";
   for(const char* option : filtering ? std::vector<const char*>{"--sigma", "--time", "--kernel", "-m", "--coarse",
-                                                                "--normalization", "--anchor-weight"}
+                                                                "--normalization", "--kernel-tolerance",
+                                                                "--anchor-weight"}
                                      : std::vector<const char*>{"--normal-sigma", "--displacement-limit"})
     if(args.has(option))
       throw Usage_error(std::string(option) + " applies to --method " +
@@ -180,6 +181,7 @@ inline Command denoise_command()
                     HD::parameters::normal_sigma(normal_sigma), HD::parameters::sigma(o.sigma),
                     HD::parameters::time(o.time), HD::parameters::kernel_method(o.kernel),
                     HD::parameters::operator_normalization(o.normalization),
+                    HD::parameters::local_kernel_tolerance(o.kernel_tolerance),
                     HD::parameters::number_of_eigenpairs(o.eigenpairs), HD::parameters::coarse_vertex_count(o.coarse),
                     HD::parameters::anchor_weight(anchor_weight),
                     HD::parameters::progress_callback(std::function<bool(double)>(std::ref(progress)))));

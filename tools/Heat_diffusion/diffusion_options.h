@@ -2,8 +2,8 @@
 // SPDX-License-Identifier: LGPL-3.0-or-later
 //
 // The diffusion options every subcommand that diffuses shares (diffuse, features, hks,
-// decompose, enhance, denoise): --sigma --time --kernel --normalization -m --coarse -k
-// --scale-invariant --field, parsed, checked and documented in one place.
+// decompose, enhance, denoise): --sigma --time --kernel --kernel-tolerance --normalization
+// -m --coarse -k --scale-invariant --field, parsed, checked and documented in one place.
 
 #ifndef CGAL_HEAT_DIFFUSION_TOOLS_DIFFUSION_OPTIONS_H
 #define CGAL_HEAT_DIFFUSION_TOOLS_DIFFUSION_OPTIONS_H
@@ -78,6 +78,7 @@ struct Diffusion_options
   // Heat_kernel_method::automatic, for the stages the tool times and reports.
   HD::Heat_kernel_method method = HD::Heat_kernel_method::local;
   std::optional<HD::Operator_normalization> normalization;
+  std::optional<double> kernel_tolerance;  // the local kernel's accuracy
   bool builds_operator = true;  // the subcommand builds A_t (and so has --normalization)
   std::optional<std::size_t> eigenpairs;
   std::optional<long long> coarse;  // not given: the library's automatic coarse level
@@ -103,6 +104,7 @@ struct Diffusion_options
     if(time) names.push_back("time");
     if(kernel) names.push_back("kernel_method");
     if(normalization) names.push_back("operator_normalization");
+    if(kernel_tolerance) names.push_back("local_kernel_tolerance");
     if(eigenpairs) names.push_back("number_of_eigenpairs");
     if(coarse) names.push_back("coarse_vertex_count");
     if(scale_invariant) names.push_back("scale_invariant_kernel");
@@ -123,6 +125,8 @@ inline Arguments diffusion_arguments(const Diffusion_spec& spec, std::vector<std
     valued.push_back(v);
   if(spec.normalization)
     valued.push_back("--normalization");
+  if(spec.local_refusal.empty())
+    valued.push_back("--kernel-tolerance");
   if(spec.time_alias)
     valued.push_back("-t");
   if(spec.steps != Diffusion_spec::no_steps)
@@ -210,6 +214,15 @@ inline Diffusion_options parse_diffusion_options(const Arguments& args, const Di
     if(o.scale_invariant)
       throw Usage_error("--scale-invariant needs the eigenvalues: use --kernel spectral");
   }
+  if(args.has("--kernel-tolerance"))
+  {
+    if(!o.local())
+      throw Usage_error("--kernel-tolerance is the accuracy of the local kernel: the spectral kernel has none");
+    const std::string text = args.value("--kernel-tolerance", "");
+    o.kernel_tolerance = parse_number("--kernel-tolerance", text, 0., true);
+    if(!(*o.kernel_tolerance < 1))
+      throw Usage_error("--kernel-tolerance must be below 1, not '" + text + "'");
+  }
 
   if(spec.steps == Diffusion_spec::step_list)
     o.steps = parse_steps(args.value("-k", spec.steps_default));
@@ -234,14 +247,21 @@ inline std::string diffusion_options_help(const Diffusion_spec& spec)
   if(spec.local_refusal.empty())
     h += help_option("--kernel K",
                      "'local': each kernel column computed around its vertex, without eigenpairs and without "
-                     "truncation (relative error below 1e-4 measured for T from 0.5 to 4; its cost per vertex grows "
-                     "with T); 'spectral': the paper's truncated kernel from M eigenpairs, accurate for large T "
+                     "truncation (to --kernel-tolerance; its cost per vertex grows with T); 'spectral': the paper's truncated kernel from M eigenpairs, accurate for large T "
                      "only (T > 4 ln 10 / lambda_M); "
                      "'automatic' (default): 'spectral' if -m, --coarse or --scale-invariant is given, else "
                      "'local'. -m, --coarse and --scale-invariant concern the eigenpairs: with 'local' they are "
                      "usage errors");
   else
     h += help_option("--kernel K", "'spectral' only (the default): " + spec.local_refusal);
+  if(spec.local_refusal.empty())
+    h += help_option("--kernel-tolerance E",
+                     "accuracy of the local kernel: the heat a kernel column may lose through the border of the "
+                     "patch it is computed on, relative to its heat; from 5e-4 on, the exponential is approximated "
+                     "with two poles instead of three (default " +
+                         format_number(HD::defaults::local_kernel_tolerance) +
+                         ", chosen from the heat regions' own truncation of the columns; 1e-4, three poles, was the "
+                         "earlier default). Local kernel only");
   if(spec.normalization)
     h += help_option("--normalization N",
                    "'balanced' (default): A_t is the kernel balanced to be doubly stochastic: heat is conserved, "

@@ -40,6 +40,7 @@ inline auto diffusion_parameters(const Diffusion_options& o, Progress_bar& progr
       HD::parameters::number_of_eigenpairs(o.eigenpairs),
       HD::parameters::scale_invariant_kernel(o.scale_invariant ? std::optional<bool>(true) : std::nullopt),
       HD::parameters::operator_normalization(o.normalization), HD::parameters::coarse_vertex_count(o.coarse),
+      HD::parameters::local_kernel_tolerance(o.kernel_tolerance),
       HD::parameters::progress_callback(std::function<bool(double)>(std::ref(progress))));
 }
 

@@ -135,6 +135,13 @@ public:
   ///     \cgalParamType{`Operator_normalization`}
   ///     \cgalParamDefault{`Operator_normalization::balanced`}
   ///   \cgalParamNEnd
+  ///   \cgalParamNBegin{local_kernel_tolerance}
+  ///     \cgalParamDescription{the local kernel's accuracy: the heat a column may lose through the
+  ///       border of its patch, relative to its heat; it also chooses the rational approximation
+  ///       of the exponential (two poles from 5e-4 on, else three). The spectral method ignores it.}
+  ///     \cgalParamType{`double`, in (0, 1)}
+  ///     \cgalParamDefault{`defaults::local_kernel_tolerance`}
+  ///   \cgalParamNEnd
   ///   \cgalParamNBegin{sigma, vertex_point_map, vertex_index_map, vertex_normal_map, vertex_normal_rule, geom_traits}
   ///     \cgalParamDescription{as for `Edge_weighted_heat_kernel`, with either method}
   ///   \cgalParamNEnd
@@ -194,7 +201,11 @@ public:
     const internal::Indexed_mesh& mesh = ncc_->indexed_mesh();
     if(mesh.number_of_vertices() == 0)
       internal::throw_invalid_input("Anisotropic_heat_diffusion: the mesh is empty");
-    build_local(t, internal::assemble_heat_operators(mesh, ncc_->data(), sigma_), progress);
+    const double tolerance =
+        internal::parameter_value(np, internal_np::local_kernel_tolerance, defaults::local_kernel_tolerance);
+    if(!(tolerance > 0 && tolerance < 1))
+      internal::throw_invalid_input("Anisotropic_heat_diffusion: local_kernel_tolerance must be in (0, 1)");
+    build_local(t, tolerance, internal::assemble_heat_operators(mesh, ncc_->data(), sigma_), progress);
   }
 
   /// Builds \f$ A_t \f$ from an existing (spectral) kernel, which must outlive this object.
@@ -382,12 +393,13 @@ private:
 
   // (takes the operators: L and B live only while the kernel's columns are computed, and
   // are freed, with the kernel, before A_t is completed: A_t is all the diffusion needs)
-  void build_local(double t, internal::Heat_operators operators, const internal::Progress& progress)
+  void build_local(double t, double tolerance, internal::Heat_operators operators, const internal::Progress& progress)
   {
     time_ = t;
     Eigen::VectorXd column_sums, peaks;
     {
-      const internal::Local_heat_kernel kernel(ncc_->indexed_mesh(), operators.stiffness, operators.mass, t);
+      const internal::Local_heat_kernel kernel(ncc_->indexed_mesh(), operators.stiffness, operators.mass, t,
+                                               tolerance);
       // Sources cluster after cluster: consecutive sources share their patch and its
       // factorisations.
       compute_heat_regions(internal::Local_columns{kernel}, kernel.source_order(), kernel.cluster_begin(), progress,

@@ -31,6 +31,10 @@ inline constexpr double time = 1.;
 inline constexpr std::size_t number_of_eigenpairs = 150;
 /// `number_of_steps` of `anisotropic_heat_diffusion()`.
 inline constexpr std::size_t number_of_steps = 1;
+/// `local_kernel_tolerance` of `Anisotropic_heat_diffusion`: the local kernel's accuracy,
+/// chosen from the error that the heat regions' truncation of its columns already makes
+/// (see the user manual). 1e-4, with three poles, was the package's earlier default.
+inline constexpr double local_kernel_tolerance = 1e-2;
 /// `feature_threshold` of `detect_features()` and `detect_multiscale_features()` (the paper's c).
 inline constexpr double feature_threshold = 0.8;
 /// The scales k at which the paper shows features and diffused fields (section 7), which

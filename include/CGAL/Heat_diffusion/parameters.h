@@ -53,7 +53,8 @@ struct Parameter_tag
   X(14, normal_sigma, is_number<K>, "a number")                                                           \
   X(15, displacement_limit, is_number<K>, "a number")                                                     \
   X(16, operator_normalization, (std::is_same<K, Operator_normalization>::value),                         \
-    "a CGAL::Heat_diffusion::Operator_normalization")
+    "a CGAL::Heat_diffusion::Operator_normalization")                                                     \
+  X(17, local_kernel_tolerance, is_number<K>, "a number")
 
 template <typename K>
 constexpr bool is_number = std::is_arithmetic<K>::value && !std::is_same<K, bool>::value;
@@ -210,6 +211,11 @@ CGAL_HEAT_DIFFUSION_NAMED_PARAMETER(scale_invariant_kernel)
 CGAL_HEAT_DIFFUSION_NAMED_PARAMETER(kernel_method)
 /// How `Anisotropic_heat_diffusion` makes \f$ A_t \f$ from the kernel, an `Operator_normalization`.
 CGAL_HEAT_DIFFUSION_NAMED_PARAMETER(operator_normalization)
+/// The accuracy of the local heat kernel (`Heat_kernel_method::local`): the heat that a
+/// column may lose through the border of the patch it is computed on, relative to its
+/// heat, which also chooses the rational approximation of the exponential (the one with
+/// the fewest poles whose error is at most a quarter of it). See `defaults::local_kernel_tolerance`.
+CGAL_HEAT_DIFFUSION_NAMED_PARAMETER(local_kernel_tolerance)
 /// A callable `bool(double fraction_done)` called on the calling thread during long
 /// computations (the eigenpairs and the coarse level, the heat regions, denoising);
 /// returning `false` cancels them with an exception.

@@ -9,6 +9,7 @@
 #ifndef CGAL_HEAT_DIFFUSION_INTERNAL_LOCAL_HEAT_KERNEL_H
 #define CGAL_HEAT_DIFFUSION_INTERNAL_LOCAL_HEAT_KERNEL_H
 
+#include <CGAL/Heat_diffusion/parameter_defaults.h>
 #include <CGAL/Heat_diffusion/internal/Indexed_mesh.h>
 #include <CGAL/Heat_diffusion/internal/multipole_block_substitution.h>
 #include <CGAL/Heat_diffusion/internal/multipole_ldlt.h>
@@ -63,16 +64,18 @@ enum class Local_kernel_mass { consistent, lumped };
 // those sources alone, until each passes.
 //
 // Rational approximation. With r(x) = sum_k Re(a_k / (-x - z_k)) ~ exp(-x)
-// (exponential_poles(), uniform error 1.5e-6 on [0, inf)),
+// (Rational_exponential: two poles, uniform error 1.25e-4 on [0, inf), or three, 1.5e-6;
+// exponential_for() chooses by the tolerance),
 //   h_P = r(t B_P^-1 L_P) B_P^-1 e_j = - sum_k Re( a_k (t L_P + z_k B_P)^-1 e_j ):
-// three complex symmetric sparse solves per column, no iteration, no convergence test.
+// two or three complex symmetric sparse solves per column, no iteration, no convergence
+// test.
 // t L_P + z_k B_P has a definite imaginary part (Im z_k B_P), so its LDL^T
 // factorisation without pivoting exists and is stable; it is computed in complex
 // arithmetic by a simplicial up-looking LDL^T (after Davis's LDL) with an AMD ordering.
 //
 // Clusters. The sources are partitioned into compact clusters of about
 // default_local_cluster_size vertices (clustered_order()); one patch, the union of the balls of its sources, serves the
-// whole cluster: one ordering, one symbolic analysis and three numeric factorisations
+// whole cluster: one ordering, one symbolic analysis and one numeric factorisation per pole
 // per cluster, and the cluster's columns solved together as a block (contiguous rows,
 // vectorised). A workspace keeps the last cluster's columns, so the sources should
 // come cluster after cluster (source_order()). A column depends only on its
@@ -93,28 +96,29 @@ enum class Local_kernel_mass { consistent, lumped };
 // the forward solution.
 //
 // Precision. The factorisation is computed in double precision, the substitutions in
-// single precision, from a copy of the factor: the block of a cluster (p rows of three
+// single precision, from a copy of the factor: the block of a cluster (p rows of the
 // poles and c sources, complex) then takes half the memory (1.4 MB on armadillo
 // subdivided to 416k vertices at t = 1, within a core's L2 cache of 2 MB), and a vector
 // register holds twice the lanes. The matrices are well conditioned (|t lambda + z_k| >=
-// 2.68 for the eigenvalues lambda >= 0 of the pencil) and the three poles' terms cancel
-// little (|a_k / z_k| <= 3.23), so the rounding stays small: a column of A_t differs from
-// the one of double-precision substitutions by at most 2.8e-6 (relative L2, armadillo
-// subdivided to 104k vertices, t = 0.5 to 4), 36 times less than the tolerance, and a
-// heat balance by at most 4.9e-7 (104k and 416k); and the substitutions are faster
-// (benchmark_local_kernel).
+// 2.68 with three poles, 1.95 with two, for the eigenvalues lambda >= 0 of the pencil) and
+// the poles' terms cancel little (|a_k / z_k| <= 3.23, 1.95), so the rounding stays small:
+// with three poles a column of A_t differs from the one of double-precision substitutions
+// by at most 2.8e-6 (relative L2, armadillo subdivided to 104k vertices, t = 0.5 to 4), and
+// a heat balance by at most 4.9e-7 (104k and 416k), which bounds the tolerances that the
+// heat balance can check; and the substitutions are faster (benchmark_local_kernel).
 //
-// Cost per cluster of c sources: a patch of p ~ (sqrt(c) + radius)^2 vertices, three
-// complex factorisations of it, and 3 c complex forward and back substitutions on part
-// of the factor; p grows like t. Linear in n for fixed t.
+// Cost per cluster of c sources: a patch of p ~ (sqrt(c) + radius)^2 vertices, one
+// complex factorisation of it per pole, and c complex forward and back substitutions per
+// pole on part of the factor; p grows like t and like log(1 / tolerance). Linear in n
+// for fixed t.
 class Local_heat_kernel
 {
 public:
   typedef Eigen::SparseMatrix<double> Sparse_matrix;
 
   // The relative accuracy aimed at by default: heat lost through the patch border,
-  // relative to the column's heat.
-  static constexpr double default_tolerance = 1e-4;
+  // relative to the column's heat (the package's default; see defaults::local_kernel_tolerance).
+  static constexpr double default_tolerance = defaults::local_kernel_tolerance;
 
   static constexpr std::uint32_t not_in_patch = (std::numeric_limits<std::uint32_t>::max)();
   static constexpr std::size_t no_cluster = (std::numeric_limits<std::size_t>::max)();
@@ -157,7 +161,8 @@ public:
                     double time, double tolerance = default_tolerance,
                     Local_kernel_mass mass_kind = Local_kernel_mass::consistent,
                     std::size_t cluster_size = default_local_cluster_size)
-    : mesh_(mesh), stiffness_(stiffness), mass_(mass), time_(time), tolerance_(tolerance), mass_kind_(mass_kind)
+    : mesh_(mesh), stiffness_(stiffness), mass_(mass), time_(time), tolerance_(tolerance), mass_kind_(mass_kind),
+      exponential_(&exponential_for(tolerance))
   {
     const std::size_t n = mesh.number_of_vertices();
     // (the patch matrices are read from the one pattern)
@@ -212,6 +217,19 @@ public:
   // Where each cluster starts in source_order(), and its end.
   const std::vector<std::size_t>& cluster_begin() const { return cluster_begin_; }
   double tolerance() const { return tolerance_; }
+  // The rational approximation of the exponential that the kernel uses.
+  const Rational_exponential& exponential() const { return *exponential_; }
+
+  // The approximation with the fewest poles (each a complex factorisation per patch
+  // and a complex solve per column) whose error is at most a quarter of `tolerance`.
+  // The approximation's error enters the heat balance (r(0) is not exactly 1), so that a
+  // tolerance near it could never be met (with two poles at 1e-4 every patch grows to
+  // the whole mesh); a quarter leaves the balance to the patch border.
+  static const Rational_exponential& exponential_for(double tolerance)
+  {
+    const Rational_exponential& two = two_pole_exponential();
+    return two.maximum_error <= 0.25 * tolerance ? two : three_pole_exponential();
+  }
 
   Workspace make_workspace() const
   {
@@ -294,7 +312,6 @@ public:
   }
 
 private:
-  static constexpr std::size_t number_of_poles = Multipole_ldlt::number_of_poles;
   static constexpr std::size_t lanes_per_pass = Multipole_ldlt::lanes_per_pass;
 
   // (Smaller patches fail the heat balance more often and are computed again; 2.6 is
@@ -413,7 +430,8 @@ private:
   // w.whole_component.
   void compute_cluster(const std::size_t* sources, std::size_t count, double radius, Workspace& w) const
   {
-    constexpr std::size_t K = number_of_poles;
+    const std::size_t K = exponential_->number_of_poles;
+    w.exponential = exponential_;
     w.whole_component = grow_patch(sources, count, radius, w);
     extract_patch_matrices(w);
     Multipole_ldlt::analyse(w);
@@ -457,16 +475,13 @@ private:
       deficit = std::abs(deficit);
   }
 
-  // r(x) ~ exp(-x) of exponential_poles() must have as many poles as this class uses
-  static_assert(number_of_poles == std::tuple_size<std::decay_t<decltype(exponential_poles())> >::value,
-                "one factor per pole of exponential_poles()");
-
   const Indexed_mesh& mesh_;
   const Sparse_matrix& stiffness_;
   const Sparse_matrix& mass_;
   double time_;
   double tolerance_;
   Local_kernel_mass mass_kind_;
+  const Rational_exponential* exponential_;
   std::vector<double> lumped_mass_;
   double initial_radius_ = 0;
   double longest_edge_ = 0;  // the cap of edge_length()

@@ -33,7 +33,6 @@ class Multipole_block_substitution
 {
 public:
   typedef Multipole_ldlt::Workspace Workspace;
-  static constexpr std::size_t number_of_poles = Multipole_ldlt::number_of_poles;
   static constexpr std::size_t lanes_per_pass = Multipole_ldlt::lanes_per_pass;
 
 #ifdef CGAL_HEAT_DIFFUSION_VECTOR_EXTENSIONS
@@ -69,8 +68,8 @@ public:
   CGAL_HEAT_DIFFUSION_VECTOR_CLONES
   static void forward_substitution(Workspace& w)
   {
-    constexpr std::size_t K = number_of_poles, S = lanes_per_pass;
-    const std::size_t p = w.size(), stride = w.stride;
+    constexpr std::size_t S = lanes_per_pass;
+    const std::size_t K = w.number_of_poles(), p = w.size(), stride = w.stride;
 #ifdef CGAL_HEAT_DIFFUSION_VECTOR_EXTENSIONS
     const bool sixteens = vector_registers_of_512_bits(), eights = vector_registers_of_256_bits();
 #endif
@@ -122,10 +121,10 @@ public:
                                                                                std::size_t lanes, float gr,
                                                                                float gi, bool zero)
   {
-    constexpr std::size_t K = number_of_poles, width = sizeof(Vector) / sizeof(float);
+    constexpr std::size_t width = sizeof(Vector) / sizeof(float);
     constexpr std::size_t V = lanes_per_pass / width;
     static_assert(V * width == lanes_per_pass, "a pass is a whole number of vectors");
-    const std::size_t stride = w.stride;
+    const std::size_t K = w.number_of_poles(), stride = w.stride;
     float* ar = w.block_real.data() + (j * K + m) * stride + offset;
     float* ai = w.block_imag.data() + (j * K + m) * stride + offset;
     const std::size_t q0 = std::size_t(w.factor_begin[j]), q1 = std::size_t(w.factor_begin[j + 1]);
@@ -173,8 +172,8 @@ public:
   CGAL_HEAT_DIFFUSION_VECTOR_CLONES
   static void back_substitution(Workspace& w, std::size_t first_pass, std::size_t last_pass)
   {
-    constexpr std::size_t K = number_of_poles, S = lanes_per_pass;
-    const std::size_t stride = w.stride, p = w.size();
+    constexpr std::size_t S = lanes_per_pass;
+    const std::size_t K = w.number_of_poles(), stride = w.stride, p = w.size();
 #ifdef CGAL_HEAT_DIFFUSION_VECTOR_EXTENSIONS
     const bool sixteens = vector_registers_of_512_bits(), eights = vector_registers_of_256_bits();
 #endif
@@ -269,8 +268,7 @@ public:
   // -a_k e_s.
   static void place_sources(const std::uint32_t* source_rows, std::size_t c, Workspace& w)
   {
-    constexpr std::size_t K = number_of_poles;
-    const std::size_t stride = w.stride;
+    const std::size_t K = w.number_of_poles(), stride = w.stride;
     const int p = int(w.size());
     // the postorder of the elimination forest (Eigen's, whose roots hang from a root p)
     w.tree_parent.resize(p);
@@ -281,7 +279,7 @@ public:
     for(std::size_t s = 0; s < c; ++s)
       w.source_rank[s] = {w.postorder[std::size_t(w.inverse_permutation[source_rows[s]])], std::uint32_t(s)};
     std::sort(w.source_rank.begin(), w.source_rank.end());
-    const std::array<Exponential_pole, K>& poles = exponential_poles();
+    const auto& poles = w.exponential->poles;
     w.block_column.resize(c);
     w.source_begin.assign(std::size_t(p), 0);
     w.source_end.assign(std::size_t(p), 0);

@@ -29,8 +29,8 @@ namespace CGAL {
 namespace Heat_diffusion {
 namespace internal {
 
-// The factorisations of P (t L_P + z_k B_P) P^T for the three poles z_k of
-// exponential_poles() on a patch P, sharing one ordering and one symbolic analysis,
+// The factorisations of P (t L_P + z_k B_P) P^T for the poles z_k of a
+// Rational_exponential (the workspace's `exponential`) on a patch P, sharing one ordering and one symbolic analysis,
 // and the workspace of the solutions of the right-hand sides -a_k e_s of a cluster's
 // sources s. The caller fills the patch matrices of the workspace, then calls
 // analyse() and factorise(), then Multipole_block_substitution's place_sources() and
@@ -40,7 +40,7 @@ namespace internal {
 class Multipole_ldlt
 {
 public:
-  static constexpr std::size_t number_of_poles = 3;  // exponential_poles().size()
+  static constexpr std::size_t maximum_number_of_poles = Rational_exponential::maximum_number_of_poles;
   // The block columns that the back substitution solves together, a pass (summed up in
   // registers: one vector of sixteen floats, or two of eight), and the multiple to which
   // a block row is rounded up. (Sixteen single-precision lanes fill an AVX-512 register;
@@ -51,6 +51,9 @@ public:
   {
     // the number p of rows: the patch's vertices
     std::size_t size() const { return patch_heat.size(); }
+    // the rational approximation whose poles are factorised (set by the caller)
+    const Rational_exponential* exponential = nullptr;
+    std::size_t number_of_poles() const { return exponential->number_of_poles; }
 
     // the patch matrices, full symmetric pattern in compressed columns (extracted by the caller)
     std::vector<int> column_begin, row;
@@ -133,12 +136,12 @@ public:
 
   // Numeric LDL^T of P (t L_P + z_k B_P) P^T for the poles z_k together (they share the
   // symbolic analysis: one traversal), complex symmetric (no conjugation). Entry q of
-  // the factor of pole k is factor_real / factor_imag[q * number_of_poles + k].
+  // the factor of pole k is factor_real / factor_imag[q * number_of_poles() + k].
   CGAL_HEAT_DIFFUSION_VECTOR_CLONES static void factorise(Workspace& w, double t)
   {
-    constexpr std::size_t K = number_of_poles;
+    const std::size_t K = w.number_of_poles();
     // y's rows hold the poles and unused lanes up to four, so that a row is one vector
-    static_assert(K <= 4, "one vector of four per row of y");
+    static_assert(maximum_number_of_poles <= 4, "one vector of four per row of y");
     constexpr std::size_t Y = 4;
 #ifdef CGAL_HEAT_DIFFUSION_VECTOR_EXTENSIONS
     const bool vectors = vector_registers_of_256_bits();
@@ -159,7 +162,7 @@ public:
     w.pattern.resize(std::size_t(p));
     std::fill(w.factor_count.begin(), w.factor_count.end(), 0);
     std::fill(w.flag.begin(), w.flag.end(), -1);  // no stale marks of the symbolic analysis
-    const std::array<Exponential_pole, K>& poles = exponential_poles();
+    const std::array<Exponential_pole, maximum_number_of_poles>& poles = w.exponential->poles;
     double* yr = w.y_real.data();
     double* yi = w.y_imag.data();
     for(int k = 0; k < p; ++k)
@@ -191,7 +194,7 @@ public:
       }
       // (copies, then clears: one loop doing both is miscompiled by g++ 12 at -O2,
       // whose loop distribution into memcpy / memset loses the imaginary parts)
-      std::array<double, K> dr, di;
+      std::array<double, maximum_number_of_poles> dr, di;
       std::copy(yr + std::size_t(k) * Y, yr + std::size_t(k) * Y + K, dr.begin());
       std::copy(yi + std::size_t(k) * Y, yi + std::size_t(k) * Y + K, di.begin());
       std::fill(yr + std::size_t(k) * Y, yr + std::size_t(k) * Y + K, 0.);
@@ -265,7 +268,7 @@ public:
         for(; top < p; ++top)
         {
           const std::size_t i = std::size_t(w.pattern[std::size_t(top)]);
-          std::array<double, K> vr, vi;
+          std::array<double, maximum_number_of_poles> vr, vi;
           std::copy(yr + i * Y, yr + i * Y + K, vr.begin());
           std::copy(yi + i * Y, yi + i * Y + K, vi.begin());
           std::fill(yr + i * Y, yr + i * Y + K, 0.);
