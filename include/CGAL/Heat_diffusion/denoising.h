@@ -308,7 +308,9 @@ namespace Heat_diffusion {
 /// \throws std::runtime_error if an eigen solve or a factorisation fails (signature
 ///   diffusion), or if the `progress_callback` cancels.
 ///
-/// Complexity: normal filtering: linear in the size of `tm` per iteration (parallel
+/// Complexity: normal filtering: the outlier test of 0 is linear in the size of `tm`
+/// per round (at most 8), and copies the mesh's index once if it finds impulses; then
+/// linear in the size of `tm` per iteration (parallel
 /// with TBB), at most `number_of_iterations` iterations plus those of the isotropic
 /// filtering on curved surfaces; two sparse Cholesky factorisations of n unknowns (the
 /// smoothing of the widths of 3 and the smoothed copy \f$ P \f$), on meshes of needles one
