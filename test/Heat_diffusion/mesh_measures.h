@@ -2,8 +2,9 @@
 // SPDX-License-Identifier: LGPL-3.0-or-later
 //
 // Shared by the tests and the benchmarks, so that both measure the same way: the mean
-// edge length, seeded noise along the normals (Gaussian on every vertex, or impulsive), 2-rings and the re-detection of
-// features within them, and the bilateral denoising baseline.
+// edge length, seeded noise along the normals (Gaussian on every vertex, or impulsive),
+// 2-rings and the re-detection of features within them, and the bilateral denoising
+// baseline.
 
 #ifndef CGAL_HEAT_DIFFUSION_MESH_MEASURES_H
 #define CGAL_HEAT_DIFFUSION_MESH_MEASURES_H
