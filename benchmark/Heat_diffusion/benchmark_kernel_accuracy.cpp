@@ -8,7 +8,7 @@
 // already make by truncating each column of the kernel. Per mesh and time t, with
 // sigma = 0.1:
 // - truncation: the heat of a reference kernel column that its heat region leaves out,
-//   1 - sum_{i in R_j} m_i h_ij / sum_i m_i h_ij (m: the lumped mass), over every 8th
+//   sum_{i not in R_j} m_i |h_ij| / sum_i m_i |h_ij| (m: the lumped mass), over every 8th
 //   source: mean and largest;
 // - per tolerance (the poles it chooses): the distance of A_t's columns to the reference
 //   A_t's, ||a_j - a*_j||_1 / ||a*_j||_1 (mean, 99th percentile, largest), the mean's
@@ -49,8 +49,8 @@ typedef HD::Anisotropic_heat_diffusion<Mesh> Diffusion;
 
 namespace {
 
+using kernel_accuracy::previous_tolerance;
 using kernel_accuracy::reference_tolerance;
-const double previous_tolerance = 1e-4;  // the earlier default
 const std::vector<double> tolerances = {1e-4, 1e-3, 1e-2, 3e-2};
 
 Mesh load(const std::string& path)
@@ -120,7 +120,8 @@ void run(const std::string& path, const std::string& name, const std::vector<dou
       std::set_symmetric_difference(found.begin(), found.end(), reference_features.begin(), reference_features.end(),
                                     std::back_inserter(differ));
       const int poles = int(HD::internal::Local_heat_kernel::exponential_for(tolerance).number_of_poles);
-      std::printf("| %s | %g | %.4f / %.4f | %g (%d) | %.2e | %.2e | %.2e | %.2f %% | %.2e | %zu / %zu | %.3f | %.2f |\n",
+      std::printf("| %s | %g | %.4f / %.4f | %g (%d) | %.2e | %.2e | %.2e | %.2f %% | %.2e | %zu / %zu | %.3f |"
+                  " %.2f |\n",
                   name.c_str(), t, truncation.mean, truncation.largest, tolerance, poles, distance.mean,
                   distance.percentile_99, distance.largest, 100. * distance.mean / truncation.mean, field_error,
                   differ.size(), reference_features.size(), seconds,
@@ -173,7 +174,8 @@ int main(int argc, char** argv)
          }))
     return *exit_code;
 
-  std::printf("The local kernel's A_t against the reference (tolerance %g), sigma 0.1\n", reference_tolerance);
+  std::printf("The local kernel's A_t against the reference (tolerance %g), sigma %g (the default)\n",
+              reference_tolerance, HD::defaults::sigma);
   std::printf("| mesh | t | truncation: heat outside the regions, mean / largest | tolerance (poles) |"
               " A_t column distance: mean | 99th percentile | largest | mean / truncation's | F^10 of the NS |"
               " features at k = 10 that differ | A_t s | / 1e-4's |\n"

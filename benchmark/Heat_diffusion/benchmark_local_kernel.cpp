@@ -68,14 +68,6 @@ typedef HD::Anisotropic_heat_diffusion<Mesh> Diffusion;
 
 volatile double benchmark_sink = 0;
 
-// A number as the table prints it: 0.0001 as 1e-4.
-std::string cli_number(double x)
-{
-  char text[32];
-  std::snprintf(text, sizeof(text), "%g", x);
-  return text;
-}
-
 double seconds_since(std::chrono::steady_clock::time_point start)
 {
   return std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
@@ -250,7 +242,8 @@ double end_to_end(const Mesh& base, int levels, double t, double sigma, HD::Heat
   const auto& r = diffusion.region_statistics();
   const double n = double(mesh.number_of_vertices());
   const bool local = method == HD::Heat_kernel_method::local;
-  std::string kernel = tolerance ? "local, tolerance " + cli_number(*tolerance) : std::string("local");
+  std::string kernel =
+      tolerance ? "local, tolerance " + heat_diffusion_cli::format_number(*tolerance) : std::string("local");
   if(!local)
   {
     const std::size_t coarse = diffusion.heat_kernel().coarse_vertex_count();
@@ -370,7 +363,8 @@ int main(int argc, char** argv)
       if(repeat > 1 && !ratios.empty())
       {
         const auto [least, most] = std::minmax_element(ratios.begin(), ratios.end());
-        const auto [previous_least, previous_most] = std::minmax_element(previous_ratios.begin(), previous_ratios.end());
+        const auto [previous_least, previous_most] =
+            std::minmax_element(previous_ratios.begin(), previous_ratios.end());
         std::printf("| %d | median of %zu runs each | local %.1f s, at 1e-4 %.1f s, spectral %.1f s | | | |"
                     " 1e-4: %.2f (%.2f to %.2f); spectral: %.2f (%.2f to %.2f) | | | | |\n",
                     level, ratios.size(), median(local_runs), median(previous_runs), median(spectral_runs),

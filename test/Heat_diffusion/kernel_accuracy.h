@@ -24,6 +24,8 @@ namespace kernel_accuracy {
 // The reference kernel's tolerance: the tightest that the heat balance of its
 // single-precision substitutions (rounding up to 5e-7) can check.
 constexpr double reference_tolerance = 2e-6;
+// The local kernel's earlier default tolerance (three poles), kept reachable.
+constexpr double previous_tolerance = 1e-4;
 
 struct Summary
 {
@@ -85,11 +87,16 @@ Summary heat_outside_regions(const Diffusion& columns, std::size_t stride = 8)
 // ||a_j - r_j||_1 / ||r_j||_1 over the columns j of A and of the reference R.
 inline Summary column_distances(const Eigen::SparseMatrix<double>& A, const Eigen::SparseMatrix<double>& R)
 {
+  const Eigen::SparseMatrix<double> difference = A - R;
   std::vector<double> distance;
   for(Eigen::Index j = 0; j < A.cols(); ++j)
   {
-    const Eigen::VectorXd a = A.col(j), r = R.col(j);
-    distance.push_back((a - r).lpNorm<1>() / r.lpNorm<1>());
+    double d = 0, r = 0;
+    for(Eigen::SparseMatrix<double>::InnerIterator it(difference, j); it; ++it)
+      d += std::abs(it.value());
+    for(Eigen::SparseMatrix<double>::InnerIterator it(R, j); it; ++it)
+      r += std::abs(it.value());
+    distance.push_back(d / r);
   }
   return summarize(distance);
 }

@@ -222,6 +222,8 @@ bool with_diffusion_parameter(const std::string& parameter, const std::string& v
     f(P::coarse_vertex_count(std::size_t(std::stoul(value))));
   else if(parameter == "scale_invariant_kernel")
     f(P::scale_invariant_kernel(value == "true"));
+  else if(parameter == "local_kernel_tolerance")
+    f(P::local_kernel_tolerance(std::stod(value)));
   else
     return false;
   return true;

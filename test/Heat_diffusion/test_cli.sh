@@ -78,6 +78,15 @@ assert c["maximum"]["100"] > 1.1 and c["minimum"]["100"] < 0.9, (c["minimum"], c
 assert all(abs(x["total_heat"][k] - 6475) <= 1e-9 for x in (d, c) for k in x["total_heat"])'; then pass; else fail "constant field, balanced and columns"; fi
 expect 2 "--normalization must be 'balanced' or 'columns'" -- "$tool" diffuse "$data/fandisk.off" --normalization rows
 expect 2 'unknown option --normalization' -- "$tool" hks "$data/fandisk.off" --normalization columns
+# the local kernel's accuracy: in (0, 1), and refused where no local kernel runs
+expect 2 "--kernel-tolerance must be a number > 0, not '0'" -- "$tool" diffuse "$data/fandisk.off" --kernel-tolerance 0
+expect 2 "--kernel-tolerance must be below 1, not '1'" -- "$tool" diffuse "$data/fandisk.off" --kernel-tolerance 1
+expect 2 "--kernel-tolerance must be a number > 0, not 'nan'" -- "$tool" features "$data/fandisk.off" --kernel-tolerance nan
+expect 2 '--kernel-tolerance is the accuracy of the local kernel' -- \
+  "$tool" diffuse "$data/fandisk.off" --kernel spectral --kernel-tolerance 1e-3
+expect 2 'unknown option --kernel-tolerance' -- "$tool" hks "$data/fandisk.off" --kernel-tolerance 1e-3
+expect 2 '--kernel-tolerance applies to --method signature_diffusion only' -- \
+  "$tool" denoise "$data/fandisk.off" -o denoised.off --kernel-tolerance 1e-3
 cp field.txt ef_k0.ply
 expect 1 'refusing to overwrite the input' -- "$tool" diffuse "$data/elephant.off" --field ef_k0.ply -o ef -k 0
 

@@ -37,8 +37,7 @@ typedef HD::Anisotropic_heat_diffusion<Mesh> Diffusion;
 typedef Eigen::SparseMatrix<double> Sparse_matrix;
 
 const std::vector<double> times = {0.5, 1., 2., 4.};
-// The local kernel's earlier default tolerance (three poles), kept reachable.
-const double previous_tolerance = 1e-4;
+using kernel_accuracy::previous_tolerance;
 
 // Columns of exp(-t B^-1 L) B^-1 for `sources` at every t of `times`, by Crank-Nicolson
 // steps of size dt after four implicit Euler steps of dt / 2 (Rannacher's start, which
@@ -208,7 +207,8 @@ void check_columns(const std::string& name, double sigma)
       const double t = times[ti];
       const Eigen::MatrixXd reference = (4. * fine[ti] - coarse[ti]) / 3.;
       const HD::internal::Local_heat_kernel local(indexed, L, B, t, tolerance);
-      const HD::internal::Local_heat_kernel lumped(indexed, L, B, t, tolerance, HD::internal::Local_kernel_mass::lumped);
+      const HD::internal::Local_heat_kernel lumped(indexed, L, B, t, tolerance,
+                                                   HD::internal::Local_kernel_mass::lumped);
       const std::string case_label = label + ", t = " + std::to_string(t).substr(0, 3) + ", tolerance " +
                                      std::to_string(tolerance).substr(0, 6) + " (" +
                                      std::to_string(local.exponential().number_of_poles) + " poles)";
@@ -267,11 +267,12 @@ void check_columns(const std::string& name, double sigma)
       // the spectrum each cost far more than the local kernel's tolerance
       CHECK_MESSAGE(lumped_error > (previous ? 10 : 2) * local_error, case_label << ": lumped " << lumped_error);
       if(t <= 1.)
-        CHECK_MESSAGE(truncated_min > (previous ? 100 : 50) * local_error, case_label << ": truncated " << truncated_min);
+        CHECK_MESSAGE(truncated_min > (previous ? 100 : 50) * local_error,
+                      case_label << ": truncated " << truncated_min);
     }
-  // The enlargement of the patches, exercised on every mesh: at the default tolerance
-  // few columns need it (none on armadillo, whose patch metric is capped where the
-  // triangles are large); at a tenth of it some do. (Not tighter: the heat balance is
+  // The enlargement of the patches, exercised on every mesh: at the tolerances above few
+  // columns need it (armadillo's patch metric is capped where the triangles are large);
+  // at 1e-5 some do. (Not tighter: the heat balance is
   // computed from single-precision substitutions, whose rounding reaches 5e-7.)
   const HD::internal::Local_heat_kernel tight(indexed, L, B, 1., 1e-5);
   enlarged_columns += check_heat_balance(tight, B, label);
@@ -397,13 +398,18 @@ void check_interface()
                "time must be positive");
   CHECK_THROWS(Diffusion(mesh, HD::parameters::combine(local, HD::parameters::time(std::numeric_limits<double>::infinity()))),
                std::invalid_argument, "time must be positive");
-  for(double tolerance : {0., 1., -1e-3, std::numeric_limits<double>::quiet_NaN()})
+  for(double tolerance : {0., 1., -1e-3, std::numeric_limits<double>::quiet_NaN(), HUGE_VAL})
     CHECK_THROWS(Diffusion(mesh, HD::parameters::combine(local, HD::parameters::local_kernel_tolerance(tolerance))),
                  std::invalid_argument, "local_kernel_tolerance must be in (0, 1)");
   // the tolerance chooses the approximation: two poles where the heat balance can
   // still check the tolerance, three below
   CHECK(Local_kernel::exponential_for(HD::defaults::local_kernel_tolerance).number_of_poles == 2);
   CHECK(Local_kernel::exponential_for(previous_tolerance).number_of_poles == 3);
+  CHECK(Local_kernel::exponential_for(5.04e-4).number_of_poles == 2);
+  CHECK(Local_kernel::exponential_for(5.03e-4).number_of_poles == 3);
+  // checked with the spectral kernel too, which ignores it
+  CHECK_THROWS(Diffusion(mesh, HD::parameters::number_of_eigenpairs(10).local_kernel_tolerance(2.)),
+               std::invalid_argument, "local_kernel_tolerance must be in (0, 1)");
 
   // the free function with the local method equals the class
   std::map<Vertex, double> in, out, out2;

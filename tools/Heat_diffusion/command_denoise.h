@@ -53,6 +53,7 @@ inline std::string stage_name(HD::Denoising_stage stage)
   case HD::Denoising_stage::needle_fit: return "needle_fit";
   case HD::Denoising_stage::cotangent_flow: return "cotangent_flow";
   case HD::Denoising_stage::signature_diffusion: return "signature_diffusion";
+  case HD::Denoising_stage::impulses: return "impulses";
   }
   return "unknown";
 }

@@ -257,8 +257,8 @@ inline std::string diffusion_options_help(const Diffusion_spec& spec)
   if(spec.local_refusal.empty())
     h += help_option("--kernel-tolerance E",
                      "accuracy of the local kernel: the heat a kernel column may lose through the border of the "
-                     "patch it is computed on, relative to its heat; from 5e-4 on, the exponential is approximated "
-                     "with two poles instead of three (default " +
+                     "patch it is computed on, relative to its heat; from about 5e-4 on, the exponential is "
+                     "approximated with two poles instead of three (default " +
                          format_number(HD::defaults::local_kernel_tolerance) +
                          ", chosen from the heat regions' own truncation of the columns; 1e-4, three poles, was the "
                          "earlier default). Local kernel only");

@@ -138,7 +138,8 @@ public:
   ///   \cgalParamNBegin{local_kernel_tolerance}
   ///     \cgalParamDescription{the local kernel's accuracy: the heat a column may lose through the
   ///       border of its patch, relative to its heat; it also chooses the rational approximation
-  ///       of the exponential (two poles from 5e-4 on, else three). The spectral method ignores it.}
+  ///       of the exponential (two poles from about 5e-4 on, four times their error, else three).
+  ///       The spectral method ignores it.}
   ///     \cgalParamType{`double`, in (0, 1)}
   ///     \cgalParamDefault{`defaults::local_kernel_tolerance`}
   ///   \cgalParamNEnd
@@ -167,7 +168,8 @@ public:
   ///
   /// Complexity: that of `Edge_weighted_heat_kernel` plus the construction from a kernel
   /// below (spectral); linear in the number of vertices for a fixed t (local: per
-  /// cluster of 96 sources, three complex sparse factorisations on a patch whose size
+  /// cluster of 96 sources, one complex sparse factorisation per pole of the rational
+  /// exponential (two at the default tolerance, three below about 5e-4) on a patch whose size
   /// grows like t, and block solves on the part of it that the heat regions read;
   /// parallel with TBB); the balancing adds a few tens of products with \f$ A_t \f$
   /// (linear, parallel).
@@ -181,6 +183,10 @@ public:
     using parameters::choose_parameter;
     using parameters::get_parameter;
     const double t = checked_time(internal::parameter_value(np, internal_np::time, defaults::time));
+    // (checked whichever kernel runs: the spectral one ignores it, but a bad value is a mistake)
+    const double tolerance = internal::checked_kernel_tolerance(
+        internal::parameter_value(np, internal_np::local_kernel_tolerance, defaults::local_kernel_tolerance),
+        "Anisotropic_heat_diffusion");
     const internal::Progress progress = internal::progress_of(np);
     if constexpr(internal::can_select_spectral_kernel<NamedParameters>)
       if(method_ == Heat_kernel_method::spectral)
@@ -201,10 +207,6 @@ public:
     const internal::Indexed_mesh& mesh = ncc_->indexed_mesh();
     if(mesh.number_of_vertices() == 0)
       internal::throw_invalid_input("Anisotropic_heat_diffusion: the mesh is empty");
-    const double tolerance =
-        internal::parameter_value(np, internal_np::local_kernel_tolerance, defaults::local_kernel_tolerance);
-    if(!(tolerance > 0 && tolerance < 1))
-      internal::throw_invalid_input("Anisotropic_heat_diffusion: local_kernel_tolerance must be in (0, 1)");
     build_local(t, tolerance, internal::assemble_heat_operators(mesh, ncc_->data(), sigma_), progress);
   }
 

@@ -379,6 +379,7 @@ Denoising_report denoise_mesh(TriangleMesh& tm, const NamedParameters& np = para
   if(!(eigenpairs >= 1) || !std::isfinite(eigenpairs))
     internal::throw_invalid_input("denoise_mesh: number_of_eigenpairs must be positive");
   internal::checked_positive(anchor_weight, "denoise_mesh", "anchor_weight");
+  internal::checked_kernel_tolerance(kernel_tolerance, "denoise_mesh");
   if(!automatic_normal_sigma)
     internal::checked_positive(user_normal_sigma, "denoise_mesh", "normal_sigma");
   if(!(displacement_limit > 0))

@@ -24,11 +24,13 @@ enum class Heat_kernel_method
   /// the one that gives the heat kernel signature and the global smoothing.
   spectral,
   /// Each column \f$ h_t(\cdot, j) \f$ computed on a patch grown around \f$ v_j \f$ by a
-  /// rational approximation of the matrix exponential (three complex poles, one patch
-  /// and one factorisation per cluster of 96 sources), with no eigenpairs and no
-  /// truncation of the spectrum: relative error below \f$ 10^{-4} \f$ for t in [0.5, 4]
-  /// on CGAL's fandisk and armadillo, where building \f$ A_t \f$ this way is faster than
-  /// the spectral path, eigen solve included (the user manual gives the measured times).
+  /// rational approximation of the matrix exponential (two complex poles at the default
+  /// `local_kernel_tolerance`, three below about 5e-4; one patch and one factorisation per pole
+  /// and cluster of 96 sources), with no eigenpairs and no truncation of the spectrum:
+  /// relative error of a column below \f$ 10^{-2} \f$ (\f$ 10^{-4} \f$ with
+  /// `local_kernel_tolerance(1e-4)`) for t in [0.5, 4] on CGAL's fandisk and armadillo,
+  /// where building \f$ A_t \f$ this way is faster than the spectral path, eigen solve
+  /// included (the user manual gives the measured times and the accuracy budget).
   /// The right choice for small t, where the truncated kernel is too flat.
   local,
   /// The default: `spectral` when the eigenpairs are asked for (the named parameter

@@ -82,6 +82,11 @@ public:
   ///     \cgalParamType{`Heat_kernel_method`}
   ///     \cgalParamDefault{`Heat_kernel_method::automatic`, which is local here}
   ///   \cgalParamNEnd
+  ///   \cgalParamNBegin{local_kernel_tolerance}
+  ///     \cgalParamDescription{the local kernel's accuracy (see `Anisotropic_heat_diffusion`)}
+  ///     \cgalParamType{`double`, in (0, 1)}
+  ///     \cgalParamDefault{`defaults::local_kernel_tolerance`}
+  ///   \cgalParamNEnd
   ///   \cgalParamNBegin{operator_normalization}
   ///     \cgalParamDescription{how \f$ A_t \f$ is made from the kernel (see `Anisotropic_heat_diffusion`)}
   ///     \cgalParamType{`Operator_normalization`}
@@ -111,6 +116,8 @@ public:
     const char* const where = "Point_set_anisotropic_heat_diffusion";
     time_ = internal::checked_positive(internal::parameter_value(np, internal_np::time, defaults::time), where, "time");
     sigma_ = internal::checked_sigma(internal::parameter_value(np, internal_np::sigma, defaults::sigma), where);
+    kernel_tolerance_ = internal::checked_kernel_tolerance(
+        internal::parameter_value(np, internal_np::local_kernel_tolerance, defaults::local_kernel_tolerance), where);
     const Heat_kernel_method method =
         internal::parameter_value(np, internal_np::kernel_method, Heat_kernel_method::automatic);
     if(method != Heat_kernel_method::automatic && method != Heat_kernel_method::local)
@@ -192,10 +199,10 @@ private:
   }
 
   // The values of Anisotropic_heat_diffusion (its spectral_group_size, balancing_tolerance
-  // and maximum_balancing_iterations, and the local kernel's default accuracy).
+  // and maximum_balancing_iterations), and the local kernel's accuracy.
   internal::Diffusion_construction_options construction_options() const
   {
-    return {threshold(), maximum_region_size, 64, 1e-4, 1000, internal::Local_heat_kernel::default_tolerance};
+    return {threshold(), maximum_region_size, 64, 1e-4, 1000, kernel_tolerance_};
   }
 
   struct Column_major_copy
@@ -207,6 +214,7 @@ private:
   std::shared_ptr<const NCC> ncc_;
   double sigma_ = defaults::sigma;
   double time_ = defaults::time;
+  double kernel_tolerance_ = defaults::local_kernel_tolerance;
   internal::Diffusion_operator diffusion_operator_;
   std::shared_ptr<Column_major_copy> column_major_ = std::make_shared<Column_major_copy>();
   Heat_region_statistics statistics_;

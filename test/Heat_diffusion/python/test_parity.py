@@ -147,6 +147,8 @@ TOOL_OPTIONS = [
     ("diffuse", ["--time", "2"], "time", "2"),
     ("diffuse", ["--kernel", "spectral"], "kernel_method", "spectral"),
     ("diffuse", ["--normalization", "columns"], "operator_normalization", "columns"),
+    ("diffuse", ["--kernel-tolerance", "1e-4"], "local_kernel_tolerance", "1e-4"),
+    ("features", ["--kernel-tolerance", "1e-4"], "local_kernel_tolerance", "1e-4"),
     ("diffuse", ["-m", "60"], "number_of_eigenpairs", "60"),
     ("diffuse", ["--coarse", "3000"], "coarse_vertex_count", "3000"),
     ("diffuse", ["--scale-invariant"], "scale_invariant_kernel", "true"),
@@ -177,6 +179,8 @@ TOOL_OPTIONS = [
     ("denoise", ["--method", "signature_diffusion", "--kernel", "spectral"], "signature:kernel_method", "spectral"),
     ("denoise", ["--method", "signature_diffusion", "--normalization", "columns"],
      "signature:operator_normalization", "columns"),
+    ("denoise", ["--method", "signature_diffusion", "--kernel-tolerance", "1e-4"],
+     "signature:local_kernel_tolerance", "1e-4"),
     ("denoise", ["--method", "signature_diffusion", "-m", "60"], "signature:number_of_eigenpairs", "60"),
 ]
 

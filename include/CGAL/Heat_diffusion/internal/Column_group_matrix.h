@@ -48,7 +48,7 @@ namespace internal {
 // An entry's value is kept in single precision, relative to a scale per column kept
 // in double precision: the value of entry (i, j) is value * column_scale[j]. The
 // float's relative rounding, 6e-8, is far below the kernels' own errors (the local
-// kernel's tolerance is 1e-4; the truncated spectral kernel is coarser still), and an
+// kernel's columns are accurate to 1e-4 at best; the truncated spectral kernel is coarser still), and an
 // entry takes six bytes instead of ten: 40 % less memory for the matrix, and less
 // traffic for its products. The products and the operators made from the matrix are
 // in double precision on the rounded values, so that what they promise exactly (a

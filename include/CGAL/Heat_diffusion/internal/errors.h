@@ -39,6 +39,14 @@ inline double checked_positive(double x, const char* where, const char* name)
   return x;
 }
 
+// The local kernel's tolerance (`local_kernel_tolerance`): in (0, 1).
+inline double checked_kernel_tolerance(double tolerance, const char* where)
+{
+  if(!(tolerance > 0 && tolerance < 1))
+    throw_invalid_input(std::string(where) + ": local_kernel_tolerance must be in (0, 1)");
+  return tolerance;
+}
+
 } // namespace internal
 } // namespace Heat_diffusion
 } // namespace CGAL

@@ -64,7 +64,7 @@ enum class Local_kernel_mass { consistent, lumped };
 // those sources alone, until each passes.
 //
 // Rational approximation. With r(x) = sum_k Re(a_k / (-x - z_k)) ~ exp(-x)
-// (Rational_exponential: two poles, uniform error 1.25e-4 on [0, inf), or three, 1.5e-6;
+// (Rational_exponential: two poles, uniform error 1.26e-4 on [0, inf), or three, 1.5e-6;
 // exponential_for() chooses by the tolerance),
 //   h_P = r(t B_P^-1 L_P) B_P^-1 e_j = - sum_k Re( a_k (t L_P + z_k B_P)^-1 e_j ):
 // two or three complex symmetric sparse solves per column, no iteration, no convergence
