@@ -20,5 +20,8 @@
 #include <CGAL/Heat_diffusion/decomposition.h>
 #include <CGAL/Heat_diffusion/denoising_report.h>
 #include <CGAL/Heat_diffusion/denoising.h>
+#include <CGAL/Heat_diffusion/point_set_normal_controlled_coordinates.h>
+#include <CGAL/Heat_diffusion/point_set_anisotropic_heat_diffusion.h>
+#include <CGAL/Heat_diffusion/point_set_multiscale_features.h>
 
 #endif // CGAL_HEAT_DIFFUSION_H

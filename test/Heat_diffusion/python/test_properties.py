@@ -143,7 +143,10 @@ def test_results_follow_the_input_order(mesh):
     assert np.max(np.abs(ns2 - ns[order])) <= 1e-12 * np.max(np.abs(ns))
     d, d2 = hd.HeatDiffusion(V, F), hd.HeatDiffusion(V2, F2)
     f, f2 = d.diffuse(ns, 10), d2.diffuse(ns2, 10)
-    assert np.max(np.abs(f2 - f[order])) <= 1e-6 * np.max(np.abs(f))
+    # to the local kernel's accuracy: its patches follow clusters of the spatial order,
+    # whose ties the input order breaks (2.3e-5 of the largest value at the default
+    # tolerance, 1e-2)
+    assert np.max(np.abs(f2 - f[order])) <= 1e-4 * np.max(np.abs(f))
     features = d.features(steps=[10])[0]
     features2 = d2.features(steps=[10])[0]
     assert sorted(order[features2["convex"]]) == features["convex"].tolist()
