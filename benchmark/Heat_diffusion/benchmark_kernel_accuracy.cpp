@@ -30,6 +30,7 @@
 #include <CGAL/Surface_mesh.h>
 
 #include "benchmark_command_line.h"
+#include "benchmark_mesh.h"
 #include "kernel_accuracy.h"
 
 #include <algorithm>
@@ -53,16 +54,7 @@ using kernel_accuracy::previous_tolerance;
 using kernel_accuracy::reference_tolerance;
 const std::vector<double> tolerances = {1e-4, 1e-3, 1e-2, 3e-2};
 
-Mesh load(const std::string& path)
-{
-  Mesh mesh;
-  if(!CGAL::IO::read_polygon_mesh(path, mesh) || num_faces(mesh) == 0)
-  {
-    std::fprintf(stderr, "cannot read %s\n", path.c_str());
-    std::exit(EXIT_FAILURE);
-  }
-  return mesh;
-}
+Mesh load(const std::string& path) { return heat_diffusion_benchmark::load_mesh_or_exit<Mesh>(path); }
 
 Diffusion build(const Mesh& mesh, double t, double tolerance, double* seconds = nullptr)
 {

@@ -44,6 +44,7 @@
 #include <CGAL/subdivision_method_3.h>
 
 #include "benchmark_command_line.h"
+#include "benchmark_mesh.h"
 
 #include <sys/resource.h>
 #include <sys/wait.h>
@@ -98,16 +99,7 @@ double peak_memory_gib()
   return double(usage.ru_maxrss) / (1024. * 1024.);  // ru_maxrss is in KiB on Linux
 }
 
-Mesh load(const std::string& path)
-{
-  Mesh mesh;
-  if(!CGAL::IO::read_polygon_mesh(path, mesh) || num_faces(mesh) == 0)
-  {
-    std::fprintf(stderr, "cannot read %s\n", path.c_str());
-    std::exit(EXIT_FAILURE);
-  }
-  return mesh;
-}
+Mesh load(const std::string& path) { return heat_diffusion_benchmark::load_mesh_or_exit<Mesh>(path); }
 
 void compare_kernels(const std::string& data, double t, double sigma)
 {
