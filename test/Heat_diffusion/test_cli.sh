@@ -1,8 +1,9 @@
 #!/usr/bin/env bash
 # The command-line tool as a user meets it: outputs, exit codes, messages.
-# Usage: test_cli.sh HEAT_DIFFUSION_BINARY DATA_DIR WORK_DIR
+# Usage: test_cli.sh HEAT_DIFFUSION_BINARY DATA_DIR WORK_DIR [POINT_DATA_DIR]
+# (POINT_DATA_DIR: CGAL's data/points_3, by default next to DATA_DIR)
 set -u
-tool=$1 data=$2 work=$3
+tool=$1 data=$2 work=$3 points=${4:-$2/../points_3}
 source "$(dirname "$0")/command_line_checks.sh"
 rm -rf "$work" && mkdir -p "$work" && cd "$work" || exit 1
 
@@ -286,6 +287,55 @@ out=$(HEAT_DIFFUSION_PROGRESS=always "$tool" features "$data/elephant.off" -m 20
 [ -z "$out" ] && pass || fail "--quiet still shows a progress bar: $out"
 out=$("$tool" diffuse "$data/elephant.off" -m 20 -k 0,20 -o prog 2>&1 >/dev/null)
 grep -q '\[#' <<<"$out" && fail "progress bar without a terminal: $out" || pass
+
+# Point sets (files without faces): ncc, diffuse and features run on them and write PLY
+# points with the fields and the normals; the JSON says so and gives k; the other
+# subcommands refuse them; options of meshes only are usage errors there.
+expect 0 '"input_kind": "points".*"neighbors": 8, "normals": "file"' -- \
+  "$tool" ncc "$points/kitten.xyz" -o kitten_ns.ply --json --quiet
+if python3 -c '
+import sys; header = open("kitten_ns.ply", "rb").read(600).split(b"end_header")[0].decode()
+for line in ("element vertex 5210", "property double ns", "property double nx", "property double nz", "element face 0"):
+    assert line in header, (line, header)'; then pass; else fail "point-set PLY header"; fi
+expect 0 '"points": 5210, "neighbors": 8' -- "$tool" ncc kitten_ns.ply -o kitten_again.ply --json --quiet
+expect 0 '"points": 5210' -- "$tool" ncc "$points/kitten.off" -o kitten_off.ply --json --quiet
+expect 0 '"given": \["k"\].*"neighbors": 12' -- "$tool" ncc "$points/kitten.xyz" --neighbors 12 -o k12.ply --json --quiet
+expect 0 '"neighbors": 0, "neighbor_radius": 0.0(3|29999)' -- \
+  "$tool" ncc "$points/kitten.xyz" --neighbors 0 --neighbor-radius 0.03 -o kr.ply --json --quiet
+expect 0 '"normals": "estimated"' -- "$tool" ncc "$points/half.xyz" -o half_ns.ply --json --quiet
+"$tool" diffuse "$points/oni.pwn" -k 0,10,40 -o oni --json --quiet > oni.json
+if python3 -c '
+import json; d = json.load(open("oni.json")); h = d["total_heat"]
+assert d["input_kind"] == "points" and d["points"] == 1435 and d["kernel"] == "local", d
+assert d["point_set"]["neighbors"] == 8 and d["point_set"]["normals"] == "file", d["point_set"]
+assert all(abs(h[k] - h["0"]) <= 1e-10 * max(1.0, abs(h["0"])) for k in h), h'; then pass; else fail "diffuse on points: JSON / heat"; fi
+for k in 0 10 40; do [ -s oni_k$k.ply ] && pass || fail "oni_k$k.ply missing"; done
+awk 'BEGIN { srand(2); for(i = 0; i < 1435; ++i) print rand() }' > oni_field.txt
+expect 0 '"field": "oni_field.txt"' -- "$tool" diffuse "$points/oni.pwn" --field oni_field.txt -k 3 -o onif --json --quiet
+expect 1 'short.txt: has 2 values, the point set has 1435 points' -- "$tool" diffuse "$points/oni.pwn" --field short.txt
+"$tool" features "$points/hippo1.ply" -k 0,10 -o hippo --json --quiet > hippo.json
+if python3 -c '
+import json; d = json.load(open("hippo.json")); f = d["features"]
+assert d["input_kind"] == "points" and d["points"] == 6104 and set(f) == {"0", "10"}, d
+assert all(len(f[k]["convex"]) > 0 and len(f[k]["concave"]) > 0 for k in f), f'; then pass; else fail "features on points: JSON"; fi
+for c in hks decompose enhance denoise; do
+  expect 1 "kitten.xyz: this file holds points and no faces: '$c' needs a triangle mesh \(ncc, diffuse and features" -- \
+    "$tool" "$c" "$points/kitten.xyz" -o refused.off
+done
+expect 1 'b9.ply: .*could not orient' -- "$tool" ncc "$data/b9.ply" -o b9_ns.ply
+expect 1 'cube.xyz: CGAL::Heat_diffusion: the point set has 8 points, fewer than k \+ 1 = 9' -- "$tool" ncc "$points/cube.xyz" -o c.ply
+expect 2 "--neighbors must be at least 2" -- "$tool" ncc "$points/kitten.xyz" --neighbors 1
+expect 2 "--neighbors must be a whole number from 0 to 10000" -- "$tool" features "$points/kitten.xyz" --neighbors 2.5
+expect 2 "--neighbor-radius must be a number > 0" -- "$tool" diffuse "$points/kitten.xyz" --neighbor-radius 0
+expect 2 '--neighbors concerns point sets: .*fandisk.off is read as a mesh' -- "$tool" ncc "$data/fandisk.off" --neighbors 8
+expect 2 'on a point set the diffusion has the local kernel only' -- "$tool" diffuse "$points/kitten.xyz" -m 20
+expect 2 'on a point set the diffusion has the local kernel only' -- "$tool" features "$points/kitten.xyz" --kernel spectral
+expect 2 '--normals is the vertex normal rule of a mesh' -- "$tool" ncc "$points/kitten.xyz" --normals pmp
+cp "$points/kitten.xyz" mine.xyz
+expect 1 'refusing to overwrite the input' -- "$tool" ncc mine.xyz -o ./mine.xyz
+cmp -s mine.xyz "$points/kitten.xyz" && pass || fail "the point file was modified"
+# a mesh with faces keeps the mesh path
+expect 0 '"faces": 12946' -- "$tool" ncc "$data/fandisk.off" -o fandisk_again.ply --json --quiet
 
 echo "test_cli: $passed passed, $failed failed"
 [ "$failed" -eq 0 ]

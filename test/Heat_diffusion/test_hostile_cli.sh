@@ -199,6 +199,58 @@ for mode in --no-repair repair; do
   done
 done
 
+# Point files (no faces): ncc, diffuse and features run on them (exit 0, finite outputs)
+# or reject them (exit 1, one line naming the file and the point); the other
+# subcommands refuse every point file, saying that they need a mesh.
+declare -A point_commands=([ncc]="" [diffuse]="-k 0,3" [features]="-k 0,3")
+# (points_extreme_normals.pwn: normals of length 1e308 and 1e-200, whose squares over- and underflow)
+accepted_points=(points_bump.xyz points_bump.pwn points_bump.ply points_bump.off points_extreme_normals.pwn)
+declare -A rejected_points=(
+  [points_too_few.xyz]='the point set has 5 points, fewer than k \+ 1 = 9'
+  [points_duplicate.xyz]='point 3 coincides with point 10'
+  # one point at 1e300 among points near 1: the others coincide after rounding, which is said
+  [points_huge_coordinate.xyz]='point 1 coincides with point 13 to double precision in a bounding box whose largest side is 1e\+300'
+  [points_collinear.xyz]='point 0 has a degenerate neighbourhood'
+  [points_tangent_normals.pwn]='point 0 has a degenerate neighbourhood'
+  [points_nan_coordinate.ply]='point 2 has a non-finite coordinate'
+  [points_inf_coordinate.ply]='point 2 has a non-finite coordinate'
+  [points_nan_normal.ply]='point 4 has a null or non-finite normal'
+  [points_zero_normal.pwn]='point 4 has a null or non-finite normal'
+  [points_two_clusters.xyz]='point 49 has a normal that CGAL::mst_orient_normals\(\) could not orient'
+  # CGAL's XYZ reader rejects the line itself
+  [points_nan_coordinate.xyz]='cannot read the points .*Error line 7'
+  [points_incomplete_normal.xyz]='cannot read the points .*Error line 4 of file \(incomplete normal coordinates\)'
+  [points_empty.xyz]='the file holds no points'
+)
+for file in "${accepted_points[@]}" "${!rejected_points[@]}"; do
+  for c in "${available[@]}"; do
+    dir="$work/points_${c}_${file//./_}"
+    if [ -n "${point_commands[$c]+set}" ]; then
+      # shellcheck disable=SC2086
+      run "$dir" "$tool" "$c" "$corpus/$file" ${point_commands[$c]} --json --quiet
+    else
+      run "$dir" "$tool" "$c" "$corpus/$file" --quiet
+    fi
+    if [ -n "${point_commands[$c]+set}" ] && [[ " ${accepted_points[*]} " == *" $file "* ]]; then
+      if [ "$status" -ne 0 ]; then fail "$c $file -> exit $status: $out"; continue; fi
+      printf '%s\n' "$out" > "$dir.json"
+      grep -q '"input_kind": "points"' "$dir.json" && pass || fail "$c $file: the summary does not say points"
+      if why=$(check_outputs "$dir.json" "$dir"/*.ply 2>&1); then pass; else fail "$c $file: $why"; fi
+      continue
+    fi
+    expected=${rejected_points[$file]:-}
+    [ -n "${point_commands[$c]+set}" ] || expected="this file holds points and no faces: '$c' needs a triangle mesh"
+    if [ "$status" -ne 1 ]; then fail "$c $file -> exit $status, expected 1: $out"; continue; fi
+    if grep -qE -- "$file: .*($expected)" <<<"$out"; then pass; else fail "$c $file: message lacks '$expected': $out"; fi
+    if [ "$(wc -l <<<"$out")" -eq 1 ]; then pass; else fail "$c $file: more than one line: $out"; fi
+    if [ -z "$(ls -A "$dir")" ]; then pass; else fail "$c $file left $(ls "$dir")"; fi
+  done
+done
+# The tool reads its own point output: the points, with the normals it wrote.
+"$tool" ncc "$corpus/points_bump.xyz" -o own_points.ply --quiet &&
+  "$tool" ncc own_points.ply -o own_points_again.ply --json --quiet | grep -q '"normals": "file"' &&
+  pass || fail "the tool cannot read its own point output"
+
 # A 40-byte file declaring a face of 2e9 vertices is rejected at once (CGAL's reader
 # alone allocates 16 GB for it), within a small address space and 10 s of CPU time (a
 # limit of the process, not of the wall clock, so a loaded machine cannot fail it: a

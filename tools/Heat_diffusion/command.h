@@ -16,6 +16,7 @@
 #include "diffusion_options.h"
 #include "mesh_input.h"
 #include "mesh_repair.h"
+#include "point_set_input.h"
 
 #include <functional>
 #include <iostream>
@@ -65,7 +66,8 @@ struct Run
   explicit Run(Arguments arguments) : args(std::move(arguments)), input(args.positional()[0]) {}
 
   Arguments args;
-  std::string input;            // the subcommand's one argument, the input mesh
+  std::string input;            // the subcommand's one argument, the input mesh (or point set)
+  bool points = false;          // the input holds points without faces (holds_points_only())
   Diffusion_options diffusion;  // the shared diffusion options (their defaults if it takes none)
   bool json = false, quiet = false;
   Stage_timer timer;
@@ -127,6 +129,9 @@ struct Command
   std::vector<std::string> flags;   // its own options without a value ...
   std::vector<std::string> valued;  // ... and with one (the shared ones come with `diffusion`)
   std::optional<Diffusion_spec> diffusion;  // the shared diffusion options it takes, if any
+  // Whether it runs on point sets too (then with --neighbors and --neighbor-radius), and
+  // does so itself where Run::points is set; the others refuse a point set.
+  bool point_sets = false;
   // Adapts `diffusion` to the subcommand's own options before the shared ones are parsed
   // (denoise: the defaults of its --method), and refuses those that do not apply.
   std::function<void(const Arguments&, Diffusion_spec&)> adapt_diffusion;
@@ -134,11 +139,16 @@ struct Command
   std::function<void(Run&)> run;      // its work, given the parsed shared options
 };
 
+// The subcommands that run on point sets (Command::point_sets), for the messages.
+const char* const point_set_commands = "ncc, diffuse and features";
+
 // Runs `command` on the command line argv[2..]: the shared options, --help and the
 // JSON summary here, the rest in command.run.
 inline int run_command(const Command& command, int argc, char** argv)
 {
   std::vector<std::string> flags = command.flags, valued = command.valued;
+  if(command.point_sets)
+    valued.insert(valued.end(), {"--neighbors", "--neighbor-radius"});
   Arguments args = [&] {
     if(command.diffusion)
       return diffusion_arguments(*command.diffusion, flags, valued);
@@ -159,6 +169,13 @@ inline int run_command(const Command& command, int argc, char** argv)
       command.adapt_diffusion(run.args, spec);
     run.diffusion = parse_diffusion_options(run.args, spec);
   }
+  run.points = holds_points_only(run.input);
+  if(run.points && !command.point_sets)
+    throw Input_error(run.input + ": this file holds points and no faces: '" + command.name +
+                      "' needs a triangle mesh (" + point_set_commands + " run on point sets)");
+  if(!run.points && (run.args.has("--neighbors") || run.args.has("--neighbor-radius")))
+    throw Usage_error(std::string(run.args.has("--neighbors") ? "--neighbors" : "--neighbor-radius") +
+                      " concerns point sets: " + run.input + " is read as a mesh");
   run.summary.string("command", command.name).string("input", run.input);
   command.run(run);
   if(run.json)

@@ -11,6 +11,8 @@
 #include "diffusion_fields.h"
 #include "diffusion_options.h"
 #include "diffusion_setup.h"
+#include "point_set_commands.h"
+#include "point_set_options.h"
 
 #include <cmath>
 #include <iostream>
@@ -34,10 +36,15 @@ inline std::string diffuse_help()
   return "Usage: heat_diffusion diffuse MESH [--sigma S] [--time T] [--kernel K] [-m M]\n"
          "                              [--coarse N] [-k K1,K2,...] [--field ns|FILE] [--scale-invariant]\n"
          "                              [-o PREFIX] [--json] [--no-baseline] [--quiet]\n"
+         "       heat_diffusion diffuse POINTS [--neighbors K] [--neighbor-radius R] [OPTIONS]\n"
          "\n"
          "Diffuses a scalar field over the mesh with the edge-weighted heat kernel of the paper:\n"
          "F^k = A_t^k F^0, where A_t convolves each vertex's heat with the kernel over its heat\n"
          "region. The total heat sum_i F^k(i) is conserved exactly.\n"
+         "\n"
+         "On POINTS (a file of points without faces, see ncc --help) the diffusion runs on the\n"
+         "surface of the points' fans, with the local kernel; the outputs are PLYs of the points\n"
+         "with 'field' and the normals, and there is no global baseline.\n"
          "\n"
          "Options:\n" +
          diffusion_options_help(diffuse_spec()) +
@@ -52,7 +59,7 @@ inline std::string diffuse_help()
                      "--sigma inf), the heat regions (min/mean/max size, collapsed), the eigenvalue range and "
                      "coarse level (spectral kernel), and the time of each stage in milliseconds") +
          help_option("--no-baseline", "leave 'global_total_heat' out of the JSON summary (no second eigen solve)") +
-         common_options_help();
+         neighbourhood_options_help() + common_options_help();
 }
 
 // The total heat of the global isotropic smoothing (sigma = inf) of F^0 after the time
@@ -95,11 +102,14 @@ inline Command diffuse_command()
   command.overview = "diffuse MESH Anisotropic, heat-conserving multi-scale diffusion of the NS or of a field";
   command.flags = {"--no-baseline"};
   command.diffusion = diffuse_spec();
+  command.point_sets = true;
   command.help = diffuse_help;
   command.run = [](Run& r) {
     const Diffusion_options& o = r.diffusion;
     const std::string prefix = r.args.value("-o", default_output(r.input, "_diffused"));
     const std::vector<std::string> outputs = step_outputs(prefix, o.steps);
+    if(r.points)
+      return diffuse_on_points(r, prefix, outputs);
     r.check_outputs(outputs, {o.field});
 
     Mesh mesh;

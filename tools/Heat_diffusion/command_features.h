@@ -11,6 +11,8 @@
 #include "diffusion_fields.h"
 #include "diffusion_options.h"
 #include "diffusion_setup.h"
+#include "point_set_commands.h"
+#include "point_set_options.h"
 
 #include <CGAL/Heat_diffusion/multiscale_features.h>
 
@@ -60,11 +62,15 @@ inline std::string features_help()
   return "Usage: heat_diffusion features MESH [--sigma S] [--time T] [--kernel K] [-m M]\n"
          "                               [--coarse N] [-k K1,K2,...] [--c C] [--field ns|FILE]\n"
          "                               [--scale-invariant] [-o PREFIX] [--json] [--quiet]\n"
+         "       heat_diffusion features POINTS [--neighbors K] [--neighbor-radius R] [OPTIONS]\n"
          "\n"
          "Multi-scale feature detection (the paper's section 7). The field F^0 (the Normal\n"
          "Signature by default) is diffused to F^k = A_t^k F^0; at scale k, a vertex is a convex\n"
          "feature if F^k there is above F^k at every other vertex of its 2-ring and above\n"
          "C max F^k, a concave feature if it is below them all and below C min F^k.\n"
+         "On POINTS (a file of points without faces, see ncc --help) the 2-ring is taken in the\n"
+         "graph of the points' fans, the diffusion has the local kernel, and the outputs are PLYs\n"
+         "of the points with 'feature', 'field' and the normals.\n"
          "\n"
          "Options:\n" +
          diffusion_options_help(features_spec()) +
@@ -76,7 +82,7 @@ inline std::string features_help()
          help_option("--json", "print a JSON summary on stdout: the vertex indices of the convex and concave features "
                                "per k (0-based, in the order of the mesh file), the heat regions, the kernel and its "
                                "coarse level, and the time of each stage in milliseconds") +
-         common_options_help() +
+         neighbourhood_options_help() + common_options_help() +
          "\nHeat regions that collapse to their vertex (the truncated kernel at small sigma and\n"
          "t) keep their heat and can make spurious features: the tool warns about them.\n";
 }
@@ -101,12 +107,15 @@ inline Command features_command()
   command.overview = "features MESH  Convex and concave features of the diffused NS (or a field) at scales k";
   command.valued = {"--c"};
   command.diffusion = features_spec();
+  command.point_sets = true;
   command.help = features_help;
   command.run = [](Run& r) {
     const Diffusion_options& o = r.diffusion;
     const std::optional<double> c = parse_feature_threshold(r.args);
     const std::string prefix = r.args.value("-o", default_output(r.input, "_features"));
     const std::vector<std::string> outputs = step_outputs(prefix, o.steps);
+    if(r.points)
+      return features_on_points(r, c, prefix, outputs);
     r.check_outputs(outputs, {o.field});
 
     Mesh mesh;

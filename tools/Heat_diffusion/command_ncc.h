@@ -9,6 +9,8 @@
 #include "cli_measures.h"
 #include "cli_output.h"
 #include "command.h"
+#include "point_set_commands.h"
+#include "point_set_options.h"
 
 #include <CGAL/Heat_diffusion/normal_controlled_coordinates.h>
 
@@ -20,10 +22,16 @@ namespace heat_diffusion_cli {
 
 const char* const ncc_help =
     "Usage: heat_diffusion ncc MESH [-o OUT.ply] [--normals area|pmp] [--json] [--quiet] [--no-repair]\n"
+    "       heat_diffusion ncc POINTS [-o OUT.ply] [--neighbors K] [--neighbor-radius R] [--json] [--quiet]\n"
     "\n"
     "Computes the Normal-Controlled Coordinates (NCC) of every vertex and their Normal\n"
     "Signature NS = NCC . normal: a scale- and rotation-invariant scalar field, positive at\n"
     "convex vertices, negative at concave ones, zero on flat regions.\n"
+    "\n"
+    "POINTS is a file of points without faces (XYZ, PWN, or PLY or OFF without faces), with\n"
+    "normals (nx, ny, nz) or without (then estimated and oriented). Each point's one-ring is\n"
+    "its fan: the Delaunay triangulation of its neighbours projected on its tangent plane.\n"
+    "The output is then a PLY of the points with 'ns' and the normals 'nx', 'ny', 'nz'.\n"
     "\n"
     "Options:\n"
     "  -o OUT.ply        output file (default: MESH's name with _ns.ply, in the current folder).\n"
@@ -39,7 +47,7 @@ const char* const ncc_help =
     "  --quiet           print nothing but errors (and the JSON summary if asked for)\n"
     "  -h, --help        this text\n";
 
-inline std::string ncc_help_text() { return ncc_help + repair_option_help(); }
+inline std::string ncc_help_text() { return ncc_help + repair_option_help() + neighbourhood_options_help(); }
 
 inline Command ncc_command()
 {
@@ -47,9 +55,12 @@ inline Command ncc_command()
   command.name = "ncc";
   command.overview = "ncc MESH     Normal-Controlled Coordinates and the Normal Signature (NS) of a mesh";
   command.valued = {"-o", "--normals"};
+  command.point_sets = true;
   command.help = ncc_help_text;
   command.run = [](Run& r) {
     const std::string output = r.args.value("-o", default_output(r.input, "_ns.ply"));
+    if(r.points)
+      return ncc_on_points(r, output);
     const std::string normals = r.args.value("--normals", "area");  // the library's default rule
     if(normals != "area" && normals != "pmp")
       throw Usage_error("--normals must be 'area' or 'pmp', not '" + normals + "'");

@@ -28,8 +28,8 @@ namespace heat_diffusion_cli {
 
 namespace HD = CGAL::Heat_diffusion;
 
-// A field file: one finite number per vertex.
-inline std::vector<double> read_field(const std::string& path, std::size_t n)
+// A field file: one finite number per vertex (or per point: `elements` "points").
+inline std::vector<double> read_field(const std::string& path, std::size_t n, const std::string& elements = "vertices")
 {
   std::ifstream is(path);
   if(!is)
@@ -45,8 +45,8 @@ inline std::vector<double> read_field(const std::string& path, std::size_t n)
     field.push_back(x);
   }
   if(field.size() != n)
-    throw Input_error(path + ": has " + std::to_string(field.size()) + " values, the mesh has " + std::to_string(n) +
-                      " vertices");
+    throw Input_error(path + ": has " + std::to_string(field.size()) + " values, the " +
+                      (elements == "points" ? "point set" : "mesh") + " has " + std::to_string(n) + " " + elements);
   return field;
 }
 

@@ -50,7 +50,9 @@ std::string general_help()
          "-o, --json, --quiet. A progress bar on stderr follows long work when stderr is a terminal.\n"
          "\n"
          "MESH is any file CGAL::IO::read_polygon_mesh reads (OFF, OBJ, PLY, STL, VTP, TS, ...);\n"
-         "polygon faces are triangulated. Exit status: 0 success, 1 bad input (the message names\n"
+         "polygon faces are triangulated. ncc, diffuse and features also run on POINTS, a file of\n"
+         "points without faces (XYZ, PWN, or PLY or OFF without faces; normals read if it has them),\n"
+         "with --neighbors K (see their --help); the others refuse it. Exit status: 0 success, 1 bad input (the message names\n"
          "the file and the problem), 2 bad usage (the message names the option). Outputs are written\n"
          "atomically (all of a run's outputs, or none) and never over an input file.\n";
 }

@@ -40,6 +40,11 @@ inline constexpr double feature_threshold = 0.8;
 /// The scales k at which the paper shows features and diffused fields (section 7), which
 /// the tool and the Python module use when the caller gives none.
 inline constexpr std::array<std::size_t, 3> feature_scales = {0, 10, 40};
+/// The neighbour count k of the point-set classes and functions
+/// (`Point_set_normal_controlled_coordinates`, `Point_set_anisotropic_heat_diffusion`),
+/// which take it as an argument: the tool and the Python module use it when the caller
+/// gives none (chosen by measurement: see the user manual's section on point sets).
+inline constexpr unsigned int number_of_neighbors = 8;
 /// `steps_per_level` of `decompose_field()`.
 inline constexpr std::size_t decomposition_steps_per_level = 5;
 /// `steps_per_level` of `filter_shape()`.

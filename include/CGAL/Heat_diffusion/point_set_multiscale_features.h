@@ -15,18 +15,60 @@
 
 #include <Eigen/Core>
 
+#include <cmath>
 #include <cstddef>
+#include <string>
 #include <vector>
 
 namespace CGAL {
 namespace Heat_diffusion {
 
 /// \ingroup PkgHeatDiffusionApplications
+/// Detects the convex and concave features of the field `field` as it is (one value per
+/// point, in the order of the range; no diffusion), by the criterion of
+/// `detect_multiscale_features()` with the 2-ring taken in the graph of the union of the
+/// points' fans (the graph that the diffusion's heat regions grow on): the point-set
+/// counterpart of `detect_multiscale_features(tm, field, convex, concave, np)`, for a
+/// field diffused already, or any other one. The features are point indices, in
+/// increasing order; the result's `number_of_steps` is 0.
+///
+/// \cgalNamedParamsBegin
+///   \cgalParamNBegin{feature_threshold}
+///     \cgalParamDescription{the paper's c}
+///     \cgalParamType{`double`, in [0, 1]}
+///     \cgalParamDefault{`defaults::feature_threshold`}
+///   \cgalParamNEnd
+/// \cgalNamedParamsEnd
+///
+/// \throws std::invalid_argument if `field` has the wrong size or a non-finite value, or
+///   if the threshold is not in [0, 1].
+///
+/// Complexity: linear in the number of points.
+template <typename PointRange, typename GeomTraits, typename NamedParameters = parameters::Default_named_parameters>
+Features_at_scale<std::size_t>
+detect_point_set_features(const Point_set_normal_controlled_coordinates<PointRange, GeomTraits>& ncc,
+                          const Eigen::VectorXd& field, const NamedParameters& np = parameters::default_values())
+{
+  const char* const where = "detect_point_set_features";
+  const double c = internal::checked_feature_threshold(
+      internal::parameter_value(np, internal_np::feature_threshold, defaults::feature_threshold), where);
+  if(field.size() != Eigen::Index(ncc.number_of_points()))
+    internal::throw_invalid_input(std::string(where) + ": the field has the wrong size");
+  for(Eigen::Index i = 0; i < field.size(); ++i)
+    if(!std::isfinite(field[i]))
+      internal::throw_invalid_input(std::string(where) + ": the field's value at point " + std::to_string(i) +
+                                    " is not finite");
+  Features_at_scale<std::size_t> result;
+  internal::detect_features(internal::make_vertex_adjacency(ncc.surface().mesh), field, c, result.convex,
+                            result.concave);
+  return result;
+}
+
+/// \ingroup PkgHeatDiffusionApplications
 /// Detects the convex and concave features of the field `field` (one value per point,
 /// in the order of the range) at the scales k of `steps`, as
-/// `detect_multiscale_features()` does on a mesh, with the 2-ring taken in the graph of
-/// the union of the points' fans (the graph that the diffusion's heat regions grow on).
-/// The features are point indices, in increasing order.
+/// `detect_multiscale_features()` does on a mesh: `detect_point_set_features()` of each
+/// \f$ F^k = A_t^k F^0 \f$, computed in one pass.
 ///
 /// \cgalNamedParamsBegin
 ///   \cgalParamNBegin{feature_threshold}
@@ -50,17 +92,16 @@ detect_point_set_multiscale_features(const Point_set_anisotropic_heat_diffusion<
                                      const Eigen::VectorXd& field, const std::vector<std::size_t>& steps,
                                      const NamedParameters& np = parameters::default_values())
 {
-  const double c = internal::checked_feature_threshold(
+  // (the threshold is checked before the diffusion's steps)
+  internal::checked_feature_threshold(
       internal::parameter_value(np, internal_np::feature_threshold, defaults::feature_threshold),
       "detect_point_set_multiscale_features");
-  const internal::Vertex_adjacency adjacency =
-      internal::make_vertex_adjacency(diffusion.normal_controlled_coordinates().surface().mesh);
   const std::vector<Eigen::VectorXd> fields = diffusion.diffuse(field, steps, np);
   std::vector<Features_at_scale<std::size_t> > result(steps.size());
   for(std::size_t s = 0; s < steps.size(); ++s)
   {
+    result[s] = detect_point_set_features(diffusion.normal_controlled_coordinates(), fields[s], np);
     result[s].number_of_steps = steps[s];
-    internal::detect_features(adjacency, fields[s], c, result[s].convex, result[s].concave);
   }
   return result;
 }

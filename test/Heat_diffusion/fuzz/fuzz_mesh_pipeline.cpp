@@ -1,8 +1,9 @@
 // Copyright (c) 2026 The CGAL Heat_diffusion developers.
 // SPDX-License-Identifier: LGPL-3.0-or-later
 //
-// libFuzzer target: arbitrary bytes as a mesh file (PLY if they start with "ply", OBJ
-// if a line starts with "v ", OFF otherwise), through
+// libFuzzer target: arbitrary bytes as a mesh or point file (PLY if they start with
+// "ply", OBJ if a line starts with "v ", XYZ if they start with a number, OFF
+// otherwise), through
 // - the tool's fast reader, compared with its checked reading (the pre-checks, CGAL's
 //   soup reader, the face index check) and, for OFF, with CGAL::IO::read_OFF;
 // - the tool's whole reading, read_triangle_mesh(), on the bytes as a file, strict and
@@ -10,7 +11,10 @@
 // - for OFF, the API user's paths: CGAL::IO::read_OFF into a Surface_mesh, and the
 //   documented repair of a soup (repair_polygon_soup, orient_polygon_soup);
 // then NCC, the reconstruction, the default denoising, a small heat kernel (m <= 10),
-// diffusion and feature detection, with parameters drawn from the input.
+// diffusion and feature detection, with parameters drawn from the input. A file of
+// points without faces (the tool's holds_points_only()) goes the tool's point-set way
+// instead: read_point_file(), then the point-set NCC, diffusion and features with k
+// neighbours drawn from the input, with the file's normals and without them.
 //
 // Fine: std::invalid_argument and std::runtime_error from the package, an Input_error
 // from the tool's reading (and any std::exception from CGAL's reading and repair on
@@ -20,13 +24,16 @@
 // Run by scripts/sanitize_and_fuzz.sh; test/Heat_diffusion/fuzz/regressions/ holds
 // the inputs that once failed.
 
-#include "mesh_input.h"  // the tool's reading, Input_error, the tool's Mesh
+#include "mesh_input.h"       // the tool's reading, Input_error, the tool's Mesh
+#include "point_set_input.h"  // the tool's reading of point files, its Point_set
 
 #include <CGAL/Heat_diffusion/Anisotropic_heat_diffusion.h>
 #include <CGAL/Heat_diffusion/Edge_weighted_heat_kernel.h>
 #include <CGAL/Heat_diffusion/denoising.h>
 #include <CGAL/Heat_diffusion/multiscale_features.h>
 #include <CGAL/Heat_diffusion/normal_controlled_coordinates.h>
+#include <CGAL/Heat_diffusion/point_set_anisotropic_heat_diffusion.h>
+#include <CGAL/Heat_diffusion/point_set_multiscale_features.h>
 #include <CGAL/Heat_diffusion/reconstruction.h>
 
 #include <CGAL/IO/OFF.h>
@@ -59,6 +66,7 @@ typedef Mesh::Vertex_index Vertex;
 const std::size_t maximum_input_bytes = 4096;
 const std::size_t maximum_vertices = 64;
 const std::size_t maximum_faces = 160;
+const std::size_t maximum_points = 64;
 
 [[noreturn]] void bug(const std::string& what)
 {
@@ -196,6 +204,54 @@ void run_package(const Mesh& mesh, const Parameters& p)
   }
 }
 
+// The package on one point set, as the tool runs it: the point-set diffusion with k
+// neighbours, its NCC, F^k and the features. Returns normally when it computed finite
+// results or threw std::invalid_argument / std::runtime_error; calls bug() otherwise.
+void run_point_package(const heat_diffusion_cli::Point_set& points, const Parameters& p)
+{
+  typedef heat_diffusion_cli::Point_set Point_set;
+  const std::size_t n = points.size();
+  if(n > maximum_points)
+    return;
+  const unsigned int k = unsigned(2 + p.m % 9);  // 2 to 10
+  try
+  {
+    const HD::Point_set_anisotropic_heat_diffusion<Point_set> diffusion(
+        points, k, HD::parameters::combine(HD::parameters::sigma(p.sigma), HD::parameters::time(p.time)));
+    const auto& ncc = diffusion.normal_controlled_coordinates();
+    require(ncc.number_of_points() == n, "points lost");
+    Eigen::VectorXd f0(static_cast<Eigen::Index>(n));
+    for(std::size_t i = 0; i < n; ++i)
+    {
+      const auto d = ncc.ncc(i), normal = ncc.normal(i);
+      require(std::isfinite(ncc.normal_signature(i)) && std::isfinite(d.x()) && std::isfinite(d.y()) &&
+                  std::isfinite(d.z()) && std::abs(normal.squared_length() - 1) < 1e-9,
+              "point-set NCC or normal not finite");
+      f0[Eigen::Index(i)] = ncc.normal_signature(i) + 1.;
+    }
+    const double scale = f0.cwiseAbs().sum();
+    for(const Eigen::VectorXd& f : diffusion.diffuse(f0, std::vector<std::size_t>{0, 1, 6}))
+    {
+      require(f.allFinite(), "diffused point field not finite");
+      require(std::abs(f.sum() - f0.sum()) <= 1e-9 * scale, "heat not conserved on the point set");
+    }
+    for(const auto& scale_features : HD::detect_point_set_multiscale_features(diffusion, f0, {0, 3}))
+      for(const auto* list : {&scale_features.convex, &scale_features.concave})
+        for(std::size_t i : *list)
+          require(i < n, "feature point out of range");
+  }
+  catch(const std::invalid_argument&)
+  {
+  }
+  catch(const std::runtime_error&)
+  {
+  }
+  catch(const std::exception& e)
+  {
+    bug(std::string("unexpected exception from the package on a point set: ") + e.what());
+  }
+}
+
 // The file format the bytes are read as.
 std::string extension_of(const std::string& text)
 {
@@ -203,6 +259,9 @@ std::string extension_of(const std::string& text)
     return ".ply";
   if(text.compare(0, 2, "v ") == 0 || text.find("\nv ") != std::string::npos)
     return ".obj";
+  const std::size_t first = text.find_first_not_of(" \t\r\n");
+  if(first != std::string::npos && std::string("0123456789+-.").find(text[first]) != std::string::npos)
+    return ".xyz";
   return ".off";
 }
 
@@ -239,6 +298,32 @@ extern "C" int LLVMFuzzerTestOneInput(const std::uint8_t* data, std::size_t size
   const Scratch_file scratch(text, extension);
   const std::string& path = scratch.path();
   namespace fi = heat_diffusion_cli::fast_input;
+
+  // A file of points goes the tool's point-set way: the points, or an Input_error; then
+  // the package with the file's normals, and without them.
+  if(heat_diffusion_cli::holds_points_only(path))
+  {
+    heat_diffusion_cli::Point_set points;
+    try
+    {
+      heat_diffusion_cli::read_point_file(path, points);
+    }
+    catch(const heat_diffusion_cli::Input_error&)
+    {
+      return 0;
+    }
+    catch(const std::exception& e)
+    {
+      bug(std::string("the tool's point reading threw something other than an Input_error: ") + e.what());
+    }
+    run_point_package(points, p);
+    if(points.has_normal_map())
+    {
+      points.remove_normal_map();
+      run_point_package(points, p);
+    }
+    return 0;
+  }
 
   // The tool's fast reader reads a subset of what its checked reading accepts, to the
   // identical mesh: what it accepts, that must accept.

@@ -96,9 +96,12 @@ struct Point_problems
 
 // The neighbours of every point (without the point itself), nearest first: the k nearest,
 // or those within the radius (nearest k of them if k > 0), by CGAL's kd-tree, in the
-// normalised frame. Throws, naming the points, if two points coincide.
+// normalised frame. Throws, naming the points, if two points coincide there: in the
+// input, or after the translation of the frame rounded them to one (a point far from
+// all the others, at 1e300 among points near 1: `extent`, the bounding box's largest
+// side in user units, says so).
 inline std::vector<std::vector<std::size_t> > find_neighbours(const std::vector<Eigen::Vector3d>& points,
-                                                              std::size_t k, double radius)
+                                                              std::size_t k, double radius, double extent)
 {
   typedef CGAL::Exact_predicates_inexact_constructions_kernel K;
   typedef CGAL::Pointer_property_map<K::Point_3>::type Point_of_index;
@@ -162,8 +165,9 @@ inline std::vector<std::vector<std::size_t> > find_neighbours(const std::vector<
   if(bad < n)
   {
     std::ostringstream os;
-    os << "coincides with point " << problems.other[bad]
-       << "; the package needs distinct points (CGAL::grid_simplify_point_set() merges duplicates)";
+    os << "coincides with point " << problems.other[bad] << " to double precision in a bounding box whose largest side is "
+       << extent << "; the package needs distinct points (CGAL::grid_simplify_point_set() merges duplicates; an"
+       << " outlier far from the others makes near points coincide)";
     throw_point_error(bad, os.str());
   }
   return neighbours;
@@ -302,7 +306,8 @@ inline Point_set_surface make_point_set_surface(std::vector<Eigen::Vector3d> use
       os << "has a non-finite coordinate (" << user_points[i].transpose() << ")";
       throw_point_error(i, os.str());
     }
-    if(given_normals && (!user_normals[i].allFinite() || !(user_normals[i].norm() > 0)))
+    // (stableNorm(): a normal of 1e-200 or 1e308 is one; its square under- or overflows)
+    if(given_normals && (!user_normals[i].allFinite() || !(user_normals[i].stableNorm() > 0)))
     {
       std::ostringstream os;
       os << "has a null or non-finite normal (" << user_normals[i].transpose() << ")";
@@ -317,7 +322,8 @@ inline Point_set_surface make_point_set_surface(std::vector<Eigen::Vector3d> use
   // (a radius in user units is scaled like the points; a power of two, exact)
   const double radius = std::ldexp(options.neighbor_radius, mesh.scale_exponent);
 
-  const std::vector<std::vector<std::size_t> > neighbours = find_neighbours(p, options.k, radius);
+  const std::vector<std::vector<std::size_t> > neighbours =
+      find_neighbours(p, options.k, radius, 2 * (0.5 * hi - 0.5 * lo).maxCoeff());
   for(std::size_t i = 0; i < n; ++i)
     if(neighbours[i].size() < 2)  // (only with a radius: else there are k >= 2)
     {
@@ -330,7 +336,7 @@ inline Point_set_surface make_point_set_surface(std::vector<Eigen::Vector3d> use
   {
     normals = std::move(user_normals);
     for(Eigen::Vector3d& v : normals)
-      v.normalize();
+      v.stableNormalize();
   }
   else
   {
