@@ -344,13 +344,13 @@ py::tuple compare_mesh_constructions(py::object V_object, py::object F_object)
 // (The package checks finiteness too, but its message names its C++ function, and, on
 // meshes it renumbers, its own index of the vertex.)
 std::vector<double> field_array(py::handle object, std::size_t n, const std::string& function,
-                                const std::string& name = "field")
+                                const std::string& name = "field", const std::string& element = "vertex")
 {
   const py::array a = numeric_array(object, function, name, "fiu");
   if(a.ndim() != 1 || std::size_t(a.shape(0)) != n)
   {
     std::ostringstream os;
-    os << name << " must have shape (" << n << ",) (one value per vertex), not " << shape_text(a);
+    os << name << " must have shape (" << n << ",) (one value per " << element << "), not " << shape_text(a);
     invalid(function, os.str());
   }
   const py::array_t<double, py::array::c_style> values = float64_array(a);
@@ -359,7 +359,7 @@ std::vector<double> field_array(py::handle object, std::size_t n, const std::str
     if(!std::isfinite(p[i]))
     {
       std::ostringstream os;
-      os << name << " value at vertex " << i << " is " << p[i] << ", not a finite number";
+      os << name << " value at " << element << " " << i << " is " << p[i] << ", not a finite number";
       invalid(function, os.str());
     }
   return std::vector<double>(p, p + n);
@@ -729,6 +729,18 @@ py::list features_list(const std::vector<HD::Features_at_scale<Vertex> >& featur
   return result;
 }
 
+// The sizes of the heat regions, as HeatDiffusion.region_statistics() returns them.
+py::dict region_statistics_dict(const HD::Heat_region_statistics& s)
+{
+  py::dict d;
+  d["min_size"] = s.min_size;
+  d["mean_size"] = s.mean_size;
+  d["max_size"] = s.max_size;
+  d["collapsed_regions"] = s.collapsed_regions;
+  d["capped_regions"] = s.capped_regions;
+  return d;
+}
+
 // The Python class HeatDiffusion: the mesh and the operator A_t built on it.
 class Heat_diffusion
 {
@@ -848,17 +860,7 @@ public:
     return csc(py::make_tuple(data, indices, indptr), py::arg("shape") = py::make_tuple(n, n));
   }
 
-  py::dict region_statistics() const
-  {
-    const HD::Heat_region_statistics& s = diffusion_->region_statistics();
-    py::dict d;
-    d["min_size"] = s.min_size;
-    d["mean_size"] = s.mean_size;
-    d["max_size"] = s.max_size;
-    d["collapsed_regions"] = s.collapsed_regions;
-    d["capped_regions"] = s.capped_regions;
-    return d;
-  }
+  py::dict region_statistics() const { return region_statistics_dict(diffusion_->region_statistics()); }
 
   py::list features(py::object field, py::object steps, py::object feature_threshold) const
   {
@@ -1217,6 +1219,8 @@ std::string feature_scales_text()
 
 } // namespace
 
+#include "point_set_functions.h"  // (it uses the helpers above)
+
 PYBIND11_MODULE(cgal_heat_diffusion, module)
 {
   namespace D = HD::defaults;
@@ -1228,7 +1232,9 @@ PYBIND11_MODULE(cgal_heat_diffusion, module)
       "F not C-contiguous integers of native byte order. Fields are 1-D array-likes of numbers.\n"
       "Results are in the order of the rows of V. Every keyword left out or None takes the C++ function's\n"
       "own default. Invalid input (shapes, non-numeric or non-integer arrays, NaN, indices out of range,\n"
-      "non-manifold or degenerate meshes, parameters) raises ValueError naming the argument.";
+      "non-manifold or degenerate meshes, parameters) raises ValueError naming the argument.\n\n"
+      "A point set is P (n x 3 numbers, as V) and optionally its oriented normals N (n x 3): the point_set_*\n"
+      "functions and PointSetHeatDiffusion take them where the others take V and F.";
 
   const std::string diffusion_doc = diffusion_arguments_doc();
   py::class_<Heat_diffusion>(module, "HeatDiffusion",
@@ -1351,6 +1357,7 @@ PYBIND11_MODULE(cgal_heat_diffusion, module)
                       (message + (repairable ? "; cgal_heat_diffusion.repair(V, F) repairs the mesh" : "")).c_str());
     }
   });
+  point_set_binding::add_point_set_functions(module);
   module.def("loop_subdivision", &loop_subdivision, py::arg("V"), py::arg("F"), py::arg("iterations") = 1,
              "(V, F) of the mesh Loop-subdivided `iterations` times.");
   module.def("_compare_mesh_constructions", &compare_mesh_constructions, py::arg("V"), py::arg("F"),

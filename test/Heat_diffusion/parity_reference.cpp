@@ -20,11 +20,20 @@
 //   decompose  the detail bands, then the residual (levels + 1 rows of n)
 //   enhance    the vertices of filter_shape() with the enhancement weights (n x 3)
 //   denoise    the vertices of denoise_mesh() (n x 3)
+// and on a point set (MESH is then a file of points, read with CGAL::IO::read_point_set(),
+// normals included where it has them), with the neighbour count k of
+// defaults::number_of_neighbors unless the parameter "k" is given:
+//   points_ncc          the Normal Signature (n)
+//   points_coordinates  the NCC (n x 3), then the normals they were measured against (n x 3)
+//   points_diffuse      F^k of the NS for each k of the feature scales (or of "steps")
+//   points_features     as features
 // Each subcommand takes the parameters that its tool command passes on; the steps lists,
 // the levels and the weights, which the library takes as arguments, are the front ends'
 // defaults (defaults::feature_scales, detail_levels, enhancement_weights) unless given.
 
 #include <CGAL/Exact_predicates_inexact_constructions_kernel.h>
+#include <CGAL/Point_set_3.h>
+#include <CGAL/Point_set_3/IO.h>
 #include <CGAL/Surface_mesh.h>
 #include <CGAL/boost/graph/IO/polygon_mesh_io.h>
 
@@ -35,6 +44,9 @@
 #include <CGAL/Heat_diffusion/multiscale_features.h>
 #include <CGAL/Heat_diffusion/normal_controlled_coordinates.h>
 #include <CGAL/Heat_diffusion/parameter_defaults.h>
+#include <CGAL/Heat_diffusion/point_set_anisotropic_heat_diffusion.h>
+#include <CGAL/Heat_diffusion/point_set_multiscale_features.h>
+#include <CGAL/Heat_diffusion/point_set_normal_controlled_coordinates.h>
 #include <CGAL/Heat_diffusion/reconstruction.h>
 
 #include <algorithm>
@@ -52,6 +64,7 @@ namespace HD = CGAL::Heat_diffusion;
 typedef CGAL::Exact_predicates_inexact_constructions_kernel Kernel;
 typedef CGAL::Surface_mesh<Kernel::Point_3> Mesh;
 typedef Mesh::Vertex_index Vertex;
+typedef CGAL::Point_set_3<Kernel::Point_3, Kernel::Vector_3> Point_set;
 
 namespace {
 
@@ -366,6 +379,71 @@ void run(const std::string& command, Mesh& mesh, const std::string& parameter, c
     throw std::invalid_argument(command + ": unknown parameter " + parameter + " " + value);
 }
 
+// A point-set command: the library's point-set classes with k neighbours and the named
+// parameters `np`, and the feature threshold of `feature_np`.
+template <typename NP, typename FeatureNP>
+void run_on_points(const std::string& command, const Point_set& points, unsigned int k,
+                   const std::vector<std::size_t>& steps, const NP& np, const FeatureNP& feature_np, Output& out)
+{
+  if(command == "points_ncc" || command == "points_coordinates")
+  {
+    const HD::Point_set_normal_controlled_coordinates<Point_set> ncc(points, k, np);
+    for(std::size_t i = 0; i < ncc.number_of_points(); ++i)
+      if(command == "points_ncc")
+        out.add(ncc.normal_signature(i));
+      else
+        for(int c = 0; c < 3; ++c)
+          out.add(ncc.ncc(i)[c]);
+    if(command == "points_coordinates")
+      for(std::size_t i = 0; i < ncc.number_of_points(); ++i)
+        for(int c = 0; c < 3; ++c)
+          out.add(ncc.normal(i)[c]);
+    return;
+  }
+  const HD::Point_set_anisotropic_heat_diffusion<Point_set> diffusion(points, k, np);
+  Eigen::VectorXd ns(static_cast<Eigen::Index>(points.size()));
+  for(std::size_t i = 0; i < points.size(); ++i)
+    ns[Eigen::Index(i)] = diffusion.normal_controlled_coordinates().normal_signature(i);
+  if(command == "points_diffuse")
+    for(const Eigen::VectorXd& f : diffusion.diffuse(ns, steps))
+      out.values.insert(out.values.end(), f.data(), f.data() + f.size());
+  else if(command == "points_features")
+    for(const auto& scale : HD::detect_point_set_multiscale_features(diffusion, ns, steps, feature_np))
+    {
+      out.add(double(scale.number_of_steps));
+      for(const auto* list : {&scale.convex, &scale.concave})
+      {
+        out.add(double(list->size()));
+        for(std::size_t i : *list)
+          out.add(double(i));
+      }
+    }
+  else
+    throw std::invalid_argument("unknown command " + command);
+}
+
+void run_on_points(const std::string& command, const Point_set& points, const std::string& parameter,
+                   const std::string& value, Output& out)
+{
+  namespace P = HD::parameters;
+  namespace D = HD::defaults;
+  std::vector<std::size_t> steps(D::feature_scales.begin(), D::feature_scales.end());
+  const unsigned int k = parameter == "k" ? unsigned(std::stoul(value)) : D::number_of_neighbors;
+  if(parameter.empty() || parameter == "k")
+    run_on_points(command, points, k, steps, P::default_values(), P::default_values(), out);
+  else if(parameter == "steps")
+    run_on_points(command, points, k, numbers(value), P::default_values(), P::default_values(), out);
+  else if(parameter == "neighbor_radius")
+    run_on_points(command, points, k, steps, CGAL::parameters::neighbor_radius(std::stod(value)),
+                  P::default_values(), out);
+  else if(parameter == "feature_threshold")
+    run_on_points(command, points, k, steps, P::default_values(), P::feature_threshold(std::stod(value)), out);
+  else if(!with_diffusion_parameter(parameter, value, [&](const auto& np) {
+            run_on_points(command, points, k, steps, np, P::default_values(), out);
+          }))
+    throw std::invalid_argument(command + ": unknown parameter " + parameter + " " + value);
+}
+
 } // namespace
 
 int main(int argc, char** argv)
@@ -377,11 +455,22 @@ int main(int argc, char** argv)
   }
   try
   {
-    Mesh mesh;
-    if(!CGAL::IO::read_polygon_mesh(argv[2], mesh))
-      throw std::runtime_error(std::string("cannot read ") + argv[2]);
+    const std::string command = argv[1];
     Output out;
-    run(argv[1], mesh, argc == 6 ? argv[4] : "", argc == 6 ? argv[5] : "", out);
+    if(command.rfind("points_", 0) == 0)
+    {
+      Point_set points;
+      if(!CGAL::IO::read_point_set(argv[2], points))
+        throw std::runtime_error(std::string("cannot read ") + argv[2]);
+      run_on_points(command, points, argc == 6 ? argv[4] : "", argc == 6 ? argv[5] : "", out);
+    }
+    else
+    {
+      Mesh mesh;
+      if(!CGAL::IO::read_polygon_mesh(argv[2], mesh))
+        throw std::runtime_error(std::string("cannot read ") + argv[2]);
+      run(command, mesh, argc == 6 ? argv[4] : "", argc == 6 ? argv[5] : "", out);
+    }
     out.write(argv[3]);
   }
   catch(const std::exception& e)

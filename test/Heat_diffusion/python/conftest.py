@@ -31,6 +31,12 @@ def data_dir():
 
 
 @pytest.fixture(scope="session")
+def point_data_dir():
+    """CGAL's point sets (data/points_3)."""
+    return _environment("HEAT_DIFFUSION_POINT_DATA_DIR")
+
+
+@pytest.fixture(scope="session")
 def hostile_dir():
     return _environment("HEAT_DIFFUSION_HOSTILE_DATA_DIR")
 
@@ -88,6 +94,13 @@ def read_ply_vertices(path):
         dtype = np.dtype([(name, "<" + code) for name, code in properties])
         records = np.frombuffer(f.read(count * dtype.itemsize), dtype=dtype, count=count)
     return {name: np.array(records[name]) for name, _ in properties}
+
+
+def read_points(point_data_dir, name):
+    """P, N (None without normals) and the path of one of CGAL's XYZ or PWN point files."""
+    path = os.path.join(point_data_dir, name)
+    values = np.loadtxt(path, ndmin=2)
+    return values[:, :3], (values[:, 3:6] if values.shape[1] >= 6 else None), path
 
 
 def run_tool(tool, *arguments, cwd):

@@ -13,7 +13,7 @@ import numpy as np
 import pytest
 
 import cgal_heat_diffusion as hd
-from conftest import read_ply_vertices, run_tool, write_ply
+from conftest import read_ply_vertices, read_points, run_tool, write_ply
 
 # CAD with creases, an organic mesh, an open mesh with holes.
 MESHES = ["fandisk.off", "elephant.off", "mech-holes-shark.off"]
@@ -377,3 +377,100 @@ def test_module_takes_what_numpy_users_pass(noisy_mesh):
     V_copy, F_copy = np.array(V), np.array(F)
     hd.denoise(V, F)
     assert np.array_equal(V, V_copy) and np.array_equal(F, F_copy)
+
+
+# Point sets: the tool on point files and the module on P (and N) give what the library's
+# point-set classes give on the file read with CGAL::IO::read_point_set().
+POINT_FILES = ["kitten.xyz", "oni.pwn", "half.xyz"]  # normals given (kitten, oni) and estimated (half)
+POINT_COMMANDS = ["points_ncc", "points_diffuse", "points_features"]
+
+
+@pytest.mark.parametrize("name", POINT_FILES)
+@pytest.mark.parametrize("command", POINT_COMMANDS)
+def test_tool_on_points_is_the_library(name, command, point_data_dir, tool, reference_program, tmp_path):
+    _, _, path = read_points(point_data_dir, name)
+    same(tool_result(tool, command[len("points_"):], path, tmp_path, []),
+         reference(reference_program, command, path, tmp_path), f"heat_diffusion {command} {name}")
+
+
+POINT_TOOL_OPTIONS = [
+    ("points_ncc", ["--neighbors", "12"], "k", "12"),
+    ("points_ncc", ["--neighbor-radius", "0.03"], "neighbor_radius", "0.03"),
+    ("points_diffuse", ["--sigma", "0.5"], "sigma", "0.5"),
+    ("points_diffuse", ["--time", "2"], "time", "2"),
+    ("points_diffuse", ["--normalization", "columns"], "operator_normalization", "columns"),
+    ("points_diffuse", ["--kernel-tolerance", "1e-4"], "local_kernel_tolerance", "1e-4"),
+    ("points_diffuse", ["-k", "3,7"], "steps", "3,7"),
+    ("points_features", ["--c", "0.5"], "feature_threshold", "0.5"),
+    ("points_features", ["--neighbors", "12"], "k", "12"),
+]
+
+
+@pytest.mark.parametrize("command, options, parameter, value", POINT_TOOL_OPTIONS,
+                         ids=[f"{c} {' '.join(o)}" for c, o, _, _ in POINT_TOOL_OPTIONS])
+def test_tool_option_on_points_is_the_library_parameter(command, options, parameter, value, point_data_dir, tool,
+                                                        reference_program, tmp_path):
+    _, _, path = read_points(point_data_dir, "kitten.xyz")
+    same(tool_result(tool, command[len("points_"):], path, tmp_path, options),
+         reference(reference_program, command, path, tmp_path, parameter, value),
+         f"heat_diffusion {command} {' '.join(options)}")
+
+
+def point_module_result(command, P, N, **keywords):
+    if command == "points_ncc":
+        return hd.point_set_normal_signature(P, N, **keywords)
+    if command == "points_coordinates":
+        return np.concatenate([a.ravel() for a in hd.point_set_normal_controlled_coordinates(P, N, **keywords)])
+    if command == "points_diffuse":
+        diffusion = hd.PointSetHeatDiffusion(P, N, **keywords)
+        return diffusion.diffuse(diffusion.normal_signature(), SCALES)
+    if command == "points_features":
+        return features_layout(hd.point_set_multiscale_features(P, N, **keywords))
+    raise AssertionError(command)
+
+
+@pytest.mark.parametrize("name", POINT_FILES)
+@pytest.mark.parametrize("command", POINT_COMMANDS + ["points_coordinates"])
+def test_module_on_points_is_the_library(name, command, point_data_dir, reference_program, tmp_path):
+    P, N, path = read_points(point_data_dir, name)
+    same(point_module_result(command, P, N), reference(reference_program, command, path, tmp_path),
+         f"cgal_heat_diffusion {command} {name}")
+
+
+POINT_MODULE_KEYWORDS = [
+    ("points_ncc", {"neighbors": 12}, "k", "12"),
+    ("points_ncc", {"neighbor_radius": 0.03}, "neighbor_radius", "0.03"),
+    ("points_diffuse", {"sigma": 0.5}, "sigma", "0.5"),
+    ("points_diffuse", {"time": 2}, "time", "2"),
+    ("points_diffuse", {"normalization": "columns"}, "operator_normalization", "columns"),
+    ("points_features", {"feature_threshold": 0.5}, "feature_threshold", "0.5"),
+    ("points_features", {"neighbors": 12}, "k", "12"),
+]
+
+
+@pytest.mark.parametrize("command, keywords, parameter, value", POINT_MODULE_KEYWORDS,
+                         ids=[f"{c} {k}" for c, k, _, _ in POINT_MODULE_KEYWORDS])
+def test_module_keyword_on_points_is_the_library_parameter(command, keywords, parameter, value, point_data_dir,
+                                                           reference_program, tmp_path):
+    P, N, path = read_points(point_data_dir, "kitten.xyz")
+    same(point_module_result(command, P, N, **keywords),
+         reference(reference_program, command, path, tmp_path, parameter, value),
+         f"cgal_heat_diffusion {command} {keywords}")
+
+
+def test_module_takes_points_as_numpy_users_pass(point_data_dir):
+    P, N, _ = read_points(point_data_dir, "oni.pwn")
+    ns = hd.point_set_normal_signature(P, N)
+    wide = np.zeros((len(P), 7))
+    wide[:, 1:4], wide[:, 4:] = P, N
+    for what, P2, N2 in [("Fortran order", np.asfortranarray(P), np.asfortranarray(N)),
+                         ("big-endian", P.astype(">f8"), N.astype(">f8")),
+                         ("slices", wide[:, 1:4], wide[:, 4:]),
+                         ("lists", P.tolist(), N.tolist())]:
+        same(hd.point_set_normal_signature(P2, N2), ns, what)
+    P32, N32 = P.astype(np.float32), N.astype(np.float32)
+    same(hd.point_set_normal_signature(P32, N32),
+         hd.point_set_normal_signature(P32.astype(np.float64), N32.astype(np.float64)), "float32")
+    diffusion = hd.PointSetHeatDiffusion(P, N)
+    same(diffusion.normal_signature(), ns, "PointSetHeatDiffusion.normal_signature")
+    same(diffusion.diffuse(ns.tolist(), 10), diffusion.diffuse(ns, 10), "field as a list")

@@ -1,0 +1,152 @@
+# The module on point sets: P (n x 3) and optional normals N, the results per row of P,
+# the guarantees of the point-set diffusion as numpy sees them, and bad input raising
+# ValueError that names the point (parity with the library: test_parity.py).
+import os
+import warnings
+
+import numpy as np
+import pytest
+
+import cgal_heat_diffusion as hd
+from conftest import read_ply_vertices, read_points
+
+
+def bump(n=7):
+    """A paraboloid patch of n x n points off a lattice (no four of them cocircular), and its normals."""
+    x, y = np.meshgrid(np.arange(n, dtype=float), np.arange(n, dtype=float))
+    x, y = x.ravel(), y.ravel()
+    x, y = x + 0.05 * np.sin(3 * y), y + 0.05 * np.cos(2 * x)
+    c = (n - 1) / 2
+    P = np.column_stack([x, y, 0.08 * ((x - c) ** 2 + (y - c) ** 2)])
+    N = np.column_stack([-0.16 * (x - c), -0.16 * (y - c), np.ones_like(x)])
+    return P, N / np.linalg.norm(N, axis=1)[:, None]
+
+
+def test_diffusion_on_points_conserves_heat_and_is_its_matrix(point_data_dir):
+    P, N, _ = read_points(point_data_dir, "kitten.xyz")
+    diffusion = hd.PointSetHeatDiffusion(P, N)
+    assert diffusion.number_of_points == len(P) and diffusion.normalization == "balanced"
+    ns = diffusion.normal_signature()
+    assert np.array_equal(ns, hd.point_set_normal_signature(P, N))
+    assert np.all(np.isfinite(ns)) and ns.min() < 0 < ns.max()
+    fields = diffusion.diffuse(ns, [0, 1, 10])
+    assert fields.shape == (3, len(P)) and np.array_equal(fields[0], ns)
+    assert np.all(np.abs(fields.sum(axis=1) - ns.sum()) <= 1e-11 * np.abs(ns).sum())
+    A = diffusion.operator_matrix()
+    assert A.shape == (len(P), len(P)) and A.has_sorted_indices
+    assert np.allclose(A @ ns, fields[1], rtol=0, atol=1e-13 * np.abs(ns).max())
+    assert np.abs(np.asarray(A.sum(axis=0)).ravel() - 1).max() < 1e-12  # columns: heat is conserved
+    normals = diffusion.normals()
+    assert np.allclose(np.linalg.norm(normals, axis=1), 1) and np.all(np.sum(normals * N, axis=1) > 0.99)
+    coordinates, normals_of_ncc = hd.point_set_normal_controlled_coordinates(P, N)
+    assert np.array_equal(normals_of_ncc, normals)
+    assert np.allclose(coordinates, ns[:, None] * normals, rtol=0, atol=1e-15)
+    stats = diffusion.region_statistics()
+    assert 1 <= stats["min_size"] <= stats["mean_size"] <= stats["max_size"]
+    for scale in diffusion.features(steps=[0, 10]):
+        assert len(scale["convex"]) > 0 and np.all(np.diff(scale["convex"]) > 0)
+        assert np.all((0 <= scale["concave"]) & (scale["concave"] < len(P)))
+
+
+def test_estimated_normals_are_oriented_outward_on_a_bump():
+    P, N = bump()
+    estimated = hd.PointSetHeatDiffusion(P).normals()
+    # mst_orient_normals() gives one orientation of the patch: the same as N, or the opposite for all
+    agreement = np.sum(estimated * N, axis=1)
+    assert np.all(agreement > 0.9) or np.all(agreement < -0.9), agreement
+
+
+def test_field_per_point_and_steps():
+    P, N = bump()
+    diffusion = hd.PointSetHeatDiffusion(P, N, sigma=1.0)
+    f = np.arange(len(P), dtype=float)
+    one = diffusion.diffuse(f)  # one step by default, an (n,) array
+    assert one.shape == (len(P),) and np.array_equal(one, diffusion.diffuse(f, [1])[0])
+    assert abs(one.sum() - f.sum()) <= 1e-12 * f.sum()
+
+
+P_BUMP, N_BUMP = bump()
+
+BAD_POINT_SETS = {
+    "P of shape (n, 2)": (P_BUMP[:, :2], None, {}, r"P must have shape \(n, 3\)"),
+    "P of text": ([["0", "0", "0"]] * 10, None, {}, "P must be an array of numbers"),
+    "NaN point": (np.vstack([P_BUMP[:5], [[1, np.nan, 2]], P_BUMP[5:]]), None, {},
+                  r"P\[5\] is \(1, nan, 2\), not a finite point"),
+    "N of another shape": (P_BUMP, N_BUMP[:10], {}, r"N must have shape \(49, 3\) \(one normal per row of P\)"),
+    "NaN normal": (P_BUMP, np.where(np.arange(49)[:, None] == 4, np.nan, N_BUMP), {},
+                   r"N\[4\] is \(nan, nan, nan\), not a finite normal"),
+    "null normal": (P_BUMP, np.where(np.arange(49)[:, None] == 4, 0.0, N_BUMP), {},
+                    "point 4 has a null or non-finite normal"),
+    "duplicate points": (np.vstack([P_BUMP, P_BUMP[3:4]]), None, {}, "point 3 coincides with point 49"),
+    "fewer points than k + 1": (P_BUMP[:5], None, {}, r"the point set has 5 points, fewer than k \+ 1 = 9"),
+    "collinear points": (np.column_stack([np.arange(20.0), 2 * np.arange(20.0), np.zeros(20)]), None, {},
+                         "point 0 .*(degenerate neighbourhood|no usable estimated normal)"),
+    "two clusters, no normals": (np.vstack([P_BUMP, P_BUMP + [1000, 0, 0]]), None, {},
+                                 "could not orient"),
+    "neighbors 1": (P_BUMP, N_BUMP, {"neighbors": 1}, "the neighbour count k must be at least 2"),
+    "neighbors -1": (P_BUMP, N_BUMP, {"neighbors": -1}, "neighbors must be from 0 to"),
+    "neighbors 2.5": (P_BUMP, N_BUMP, {"neighbors": 2.5}, "neighbors must be a whole number"),
+    "negative radius": (P_BUMP, N_BUMP, {"neighbor_radius": -1.0}, "neighbor_radius must be positive"),
+    "NaN radius": (P_BUMP, N_BUMP, {"neighbor_radius": float("nan")}, "neighbor_radius must be positive"),
+}
+
+
+@pytest.mark.parametrize("case", list(BAD_POINT_SETS))
+@pytest.mark.parametrize("function", ["point_set_normal_signature", "PointSetHeatDiffusion",
+                                      "point_set_multiscale_features"])
+def test_bad_point_sets_raise_value_error(case, function):
+    P, N, keywords, message = BAD_POINT_SETS[case]
+    with pytest.raises(ValueError, match=message):
+        getattr(hd, function)(P, N, **keywords)
+
+
+def test_point_sets_have_the_local_kernel_only():
+    with pytest.raises(ValueError, match="only Heat_kernel_method::local"):
+        hd.PointSetHeatDiffusion(P_BUMP, N_BUMP, kernel="spectral")
+    with pytest.raises(ValueError, match="normalization must be 'balanced', 'columns' or None"):
+        hd.PointSetHeatDiffusion(P_BUMP, N_BUMP, normalization="rows")
+    diffusion = hd.PointSetHeatDiffusion(P_BUMP, N_BUMP)
+    with pytest.raises(ValueError, match=r"field must have shape \(49,\)"):
+        diffusion.diffuse(np.zeros(3), 1)
+    with pytest.raises(ValueError, match="field value at point 2 is nan"):
+        diffusion.diffuse(np.where(np.arange(49) == 2, np.nan, 0.0), 1)
+
+
+HOSTILE_DIR = os.environ.get("HEAT_DIFFUSION_HOSTILE_DATA_DIR", "")
+POINT_FILES = sorted(f for f in os.listdir(HOSTILE_DIR) if f.startswith("points_")) if os.path.isdir(HOSTILE_DIR) else []
+
+
+def test_hostile_point_files_are_there():
+    assert len(POINT_FILES) >= 15, POINT_FILES
+
+
+def arrays_of_point_file(path):
+    """P and N (None without normals) of a point file, as numpy reads it."""
+    if path.endswith(".ply"):
+        ply = read_ply_vertices(path)
+        P = np.column_stack([ply["x"], ply["y"], ply["z"]])
+        return P, (np.column_stack([ply["nx"], ply["ny"], ply["nz"]]) if "nx" in ply else None)
+    skip = 2 if path.endswith(".off") else 0
+    with warnings.catch_warnings():
+        warnings.simplefilter("ignore")  # (an empty file)
+        values = np.loadtxt(path, ndmin=2, skiprows=skip, comments="#")
+    return values[:, :3], (values[:, 3:6] if values.shape[1] >= 6 else None)
+
+
+@pytest.mark.parametrize("name", POINT_FILES)
+def test_hostile_point_file(name):
+    try:
+        P, N = arrays_of_point_file(os.path.join(HOSTILE_DIR, name))
+    except ValueError as e:  # numpy cannot read it (an incomplete line): no arrays to give
+        pytest.skip(f"{name} cannot be read into arrays: {e}")
+    for function in (hd.point_set_normal_signature, hd.PointSetHeatDiffusion, hd.point_set_multiscale_features):
+        try:
+            result = function(P, N)
+        except ValueError as e:
+            assert str(e), f"{name}: {function.__name__}: ValueError without a message"
+            continue
+        if isinstance(result, np.ndarray):
+            assert np.all(np.isfinite(result)), f"{name}: non-finite NS"
+        if isinstance(result, hd.PointSetHeatDiffusion):
+            f = result.diffuse(result.normal_signature(), [0, 5])
+            assert np.all(np.isfinite(f)) and abs(f[1].sum() - f[0].sum()) <= 1e-12 * max(1.0, np.abs(f[0]).sum())
