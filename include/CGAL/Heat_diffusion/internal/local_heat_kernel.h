@@ -39,8 +39,17 @@ namespace CGAL {
 namespace Heat_diffusion {
 namespace internal {
 
-// The number of sources whose columns share one patch and its factorisations.
-constexpr std::size_t default_local_cluster_size = 96;
+// How large the kernel's patches are: a source's ball has the radius
+// radius_factor * sqrt(t ln(1 / tolerance)) (or the reach of B^-1 e_j, if larger), and
+// the sources come in clusters of at most cluster_size whose columns share one patch and
+// its factorisations. Smaller patches lose more columns to the heat balance, which are
+// computed again on enlarged patches; larger clusters share a factorisation among more
+// sources but make every column's substitutions longer.
+struct Local_kernel_patch_rule
+{
+  double radius_factor;
+  std::size_t cluster_size;
+};
 
 // Which mass matrix the local kernel uses. `consistent` is the FEM mass matrix B of
 // eq. 11, the operator of the spectral kernel; `lumped` replaces it by its row sums
@@ -59,9 +68,10 @@ enum class Local_kernel_mass { consistent, lumped };
 // the metric of diffusion_length() whose radius grows with sqrt(t ln(1/tolerance)).
 // The heat lost through the border of the patch measures the truncation: the exact
 // column carries the total heat 1^T B h = 1, so |1 - 1^T B_P h_P| is checked against
-// the tolerance. The columns that fail (30 of 416k on armadillo subdivided twice, at
-// t = 1, in 29 of its 4514 clusters) are computed again on patches enlarged around
-// those sources alone, until each passes.
+// the tolerance. The columns that fail (on armadillo subdivided twice, at t = 1: 707 of
+// 416k, in 609 of its 3417 clusters, at the default tolerance; 28 in 27 of 4511 at
+// 1e-4) are computed again on patches enlarged around those sources alone, until each
+// passes.
 //
 // Rational approximation. With r(x) = sum_k Re(a_k / (-x - z_k)) ~ exp(-x)
 // (Rational_exponential: two poles, uniform error 1.26e-4 on [0, inf), or three, 1.5e-6;
@@ -74,9 +84,9 @@ enum class Local_kernel_mass { consistent, lumped };
 // arithmetic by a simplicial up-looking LDL^T (after Davis's LDL) with an AMD ordering.
 //
 // Clusters. The sources are partitioned into compact clusters of about
-// default_local_cluster_size vertices (clustered_order()); one patch, the union of the balls of its sources, serves the
-// whole cluster: one ordering, one symbolic analysis and one numeric factorisation per pole
-// per cluster, and the cluster's columns solved together as a block (contiguous rows,
+// patch_rule_for(tolerance).cluster_size vertices (clustered_order()); one patch, the
+// union of the balls of its sources, serves the whole cluster: one ordering, one
+// symbolic analysis and one numeric factorisation per pole per cluster, and the cluster's columns solved together as a block (contiguous rows,
 // vectorised). A workspace keeps the last cluster's columns, so the sources should
 // come cluster after cluster (source_order()). A column depends only on its
 // cluster, never on the order of the calls or on the thread: sequential and parallel
@@ -159,11 +169,11 @@ public:
 
   Local_heat_kernel(const Indexed_mesh& mesh, const Sparse_matrix& stiffness, const Sparse_matrix& mass,
                     double time, double tolerance = default_tolerance,
-                    Local_kernel_mass mass_kind = Local_kernel_mass::consistent,
-                    std::size_t cluster_size = default_local_cluster_size)
+                    Local_kernel_mass mass_kind = Local_kernel_mass::consistent)
     : mesh_(mesh), stiffness_(stiffness), mass_(mass), time_(time), tolerance_(tolerance), mass_kind_(mass_kind),
       exponential_(&exponential_for(tolerance))
   {
+    const Local_kernel_patch_rule rule = patch_rule_for(tolerance);
     const std::size_t n = mesh.number_of_vertices();
     // (the patch matrices are read from the one pattern)
     CGAL_precondition(stiffness.rows() == Eigen::Index(n) && have_the_same_pattern(stiffness, mass));
@@ -177,7 +187,7 @@ public:
     // small sigma closes to L: no heat flows there, so the heat balance cannot see it.
     const double log_tolerance = std::log(1. / tolerance);
     const double reach_in_edges = log_tolerance / std::log(2. + std::sqrt(3.));
-    initial_radius_ = (std::max)(radius_factor * std::sqrt(time * log_tolerance), reach_in_edges);
+    initial_radius_ = (std::max)(rule.radius_factor * std::sqrt(time * log_tolerance), reach_in_edges);
     // The edge lengths of diffusion_length() along the fans (the graph of L), for
     // Dijkstra, at most initial_radius_ / reach_in_edges: where the triangles are large,
     // a ball of that radius still spans the reach of B^-1 e_j in edges. (Uncapped, long
@@ -187,7 +197,7 @@ public:
     // take 8 bytes per halfedge, for a square root per edge of a patch.)
     longest_edge_ = initial_radius_ / reach_in_edges;
     std::vector<std::size_t> begin;
-    cluster_order_ = clustered_order(mesh, (std::max)(cluster_size, std::size_t(1)), &begin);
+    cluster_order_ = clustered_order(mesh, rule.cluster_size, &begin);
     cluster_begin_.assign(begin.begin(), begin.end());
     cluster_of_.assign(n, 0);
     position_in_cluster_.assign(n, 0);
@@ -229,6 +239,19 @@ public:
   {
     const Rational_exponential& two = two_pole_exponential();
     return two.maximum_error <= 0.25 * tolerance ? two : three_pole_exponential();
+  }
+
+  // The patch rule at `tolerance`, with the approximation of exponential_for(): where
+  // the patches' savings and the columns computed again balance best, measured by
+  // benchmark_local_kernel (armadillo subdivided once and twice, t = 0.5 to 4, sigma 0.1,
+  // in CPU time). With two poles (the default tolerance) the radius factor 2.4 and
+  // clusters of 128; with three (tolerances below 5e-4) 2.6 and 96, the package's
+  // earlier rule, kept so that local_kernel_tolerance(1e-4) computes what it did. (At
+  // the default tolerance the radius is the reach of B^-1 e_j below t = 0.46.)
+  static Local_kernel_patch_rule patch_rule_for(double tolerance)
+  {
+    return exponential_for(tolerance).number_of_poles == 2 ? Local_kernel_patch_rule{2.4, 128}
+                                                            : Local_kernel_patch_rule{2.6, 96};
   }
 
   Workspace make_workspace() const
@@ -313,12 +336,6 @@ public:
 
 private:
   static constexpr std::size_t lanes_per_pass = Multipole_ldlt::lanes_per_pass;
-
-  // (Smaller patches fail the heat balance more often and are computed again; 2.6 is
-  // where the smaller patches' savings and the recomputations balance best, measured
-  // by benchmark_local_kernel. Below t = 0.79, at the default tolerance, the radius is
-  // the reach of B^-1 e_j.)
-  static constexpr double radius_factor = 2.6;
 
   // Length of the edge ik in the metric in which the kernel spreads like a Gaussian:
   // a random walk with rates w_ik / m_i moves about sqrt(m / w) per unit time. The
