@@ -60,6 +60,11 @@ if [ -n "$python" ]; then
   expect 2 "--tool '$work/no_such_tool' is not an executable file" -- \
     "$python" "$script" --tool "$work/no_such_tool" --data "$work"
   expect 2 "--data '$work/no_such_dir' is not a directory" -- "$python" "$script" --tool /bin/true --data "$work/no_such_dir"
+  script=$(dirname "$0")/../../benchmark/Heat_diffusion/benchmark_point_set_neighbors.py
+  expect 0 "^usage: benchmark_point_set_neighbors.py" -- "$python" "$script" --help
+  expect 2 "argument --neighbors: not a whole number from 2 to 1000: '1'" -- "$python" "$script" --data "$work" --neighbors 8,1
+  expect 2 "--data '$work/no_such_dir' is not a directory" -- "$python" "$script" --data "$work/no_such_dir"
+  expect 2 "--meshes: $work/no_such.off is not a file" -- "$python" "$script" --data "$work" --meshes no_such.off
 fi
 
 echo "$passed passed, $failed failed"
