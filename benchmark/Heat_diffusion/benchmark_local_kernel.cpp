@@ -26,11 +26,13 @@
 //          row sums of the column-normalised one, which the balancing brings to 1.
 //
 // Usage: benchmark_local_kernel [DATA_DIR] [--levels L] [--first-level F] [--no-table-1]
-//                               [--no-table-3] [--time T] [--sigma S] [--repeat R]
+//                               [--no-table-3] [--no-spectral] [--time T] [--sigma S] [--repeat R]
 //   L (default 3): Loop subdivision levels of table 2 (3 gives 1.6M vertices: minutes);
 //   F (default 0): the first level of table 2 (L = -1 skips table 2);
 //   R (default 1): the runs of each kernel per level of table 2, alternating local and
-//                  spectral; with R > 1, a last row per level gives the medians.
+//                  spectral; with R > 1, a last row per level gives the medians, and
+//                  the ratios of NCC + A_t, default / 1e-4, in wall and in CPU time;
+//   --no-spectral: table 2 without the spectral runs.
 // Wall-clock times: the eigen solve and the large meshes take seconds to minutes, and
 // the machine may be shared, so compare within a run (and repeat the runs of table 2:
 // their ratio moves by several percent from run to run).
@@ -203,14 +205,22 @@ void run_in_child(const char* what, const Function& f)
 // One row of table 2, in the calling process (run it in a child for its own peak):
 // the local kernel (at its default tolerance, or at `tolerance` if given), or the
 // spectral one of m = 150 eigenpairs with the package's automatic coarse level (above
-// 100k vertices). Returns the total seconds.
-double end_to_end(const Mesh& base, int levels, double t, double sigma, HD::Heat_kernel_method method,
-                  double local_seconds, std::optional<double> tolerance = std::nullopt)
+// 100k vertices).
+struct Run_seconds
+{
+  double total = 0;      // to the features, wall
+  double build = 0;      // NCC + L, B (+ eigenpairs) + A_t, wall
+  double build_cpu = 0;  // the same, CPU seconds of all threads
+};
+
+Run_seconds end_to_end(const Mesh& base, int levels, double t, double sigma, HD::Heat_kernel_method method,
+                       double local_seconds, std::optional<double> tolerance = std::nullopt)
 {
   Mesh mesh = base;
   if(levels > 0)
     CGAL::Subdivision_method_3::Loop_subdivision(mesh, CGAL::parameters::number_of_iterations(levels));
   const double before = peak_memory_gib();
+  const double cpu_start = cpu_seconds();
   const auto start = std::chrono::steady_clock::now();
   // The construction reports 0.95 when the heat regions are done and the balancing starts.
   std::chrono::steady_clock::time_point regions_done{};
@@ -224,6 +234,7 @@ double end_to_end(const Mesh& base, int levels, double t, double sigma, HD::Heat
                                                           HD::parameters::local_kernel_tolerance(tolerance),
                                                           HD::parameters::progress_callback(progress)));
   const double build_seconds = seconds_since(start);
+  const double build_cpu_seconds = cpu_seconds() - cpu_start;
   const double balancing_seconds = std::chrono::duration<double>(std::chrono::steady_clock::now() - regions_done).count();
   auto ns = mesh.add_property_map<Mesh::Vertex_index, double>("v:ns").first;
   for(auto v : mesh.vertices())
@@ -244,35 +255,36 @@ double end_to_end(const Mesh& base, int levels, double t, double sigma, HD::Heat
   char ratio[32] = "";
   if(local_seconds > 0)
     std::snprintf(ratio, sizeof(ratio), "%.2f", total_seconds / local_seconds);
-  std::printf("| %d | %zu | %s | %.1f | %.2f (%zu, %.1f %%) | %.1f | %s | %.2f | %.2f | %.2f | %zu / %.1f / %zu (%zu) |\n",
-              levels, std::size_t(mesh.number_of_vertices()), kernel.c_str(), build_seconds, balancing_seconds,
+  std::printf("| %d | %zu | %s | %.1f | %.1f | %.2f (%zu, %.1f %%) | %.1f | %s | %.2f | %.2f | %.2f | %zu / %.1f / %zu (%zu) |\n",
+              levels, std::size_t(mesh.number_of_vertices()), kernel.c_str(), build_seconds, build_cpu_seconds,
+              balancing_seconds,
               diffusion.balancing_iterations(), 100. * balancing_seconds / build_seconds, total_seconds, ratio,
               1e6 * total_seconds / n, before, peak_memory_gib(), r.min_size, r.mean_size, r.max_size,
               r.collapsed_regions);
   std::fflush(stdout);
-  return total_seconds;
+  return {total_seconds, build_seconds, build_cpu_seconds};
 }
 
 // Runs end_to_end() in a child process, so that its peak memory is its own; returns its
-// total seconds (0 if it failed).
-double end_to_end_in_child(const Mesh& base, int levels, double t, double sigma, HD::Heat_kernel_method method,
-                           double local_seconds, std::optional<double> tolerance = std::nullopt)
+// seconds (all 0 if it failed).
+Run_seconds end_to_end_in_child(const Mesh& base, int levels, double t, double sigma, HD::Heat_kernel_method method,
+                                double local_seconds, std::optional<double> tolerance = std::nullopt)
 {
   int channel[2];
   if(pipe(channel) != 0)
-    return 0.;
+    return {};
   const pid_t child = fork();
   if(child == 0)
   {
     close(channel[0]);
-    const double seconds = end_to_end(base, levels, t, sigma, method, local_seconds, tolerance);
+    const Run_seconds seconds = end_to_end(base, levels, t, sigma, method, local_seconds, tolerance);
     benchmark_sink = double(write(channel[1], &seconds, sizeof(seconds)));
     std::_Exit(EXIT_SUCCESS);
   }
   close(channel[1]);
-  double seconds = 0.;
+  Run_seconds seconds;
   if(read(channel[0], &seconds, sizeof(seconds)) != ssize_t(sizeof(seconds)))
-    seconds = 0.;
+    seconds = Run_seconds();
   close(channel[0]);
   int status = 0;
   waitpid(child, &status, 0);
@@ -285,18 +297,19 @@ int main(int argc, char** argv)
 {
   std::string data = CGAL_HEAT_DIFFUSION_DATA_DIR;
   int levels = 3, first_level = 0, repeat = 1;
-  bool table_1 = true, table_3 = true;
+  bool table_1 = true, table_3 = true, spectral = true;
   double t = 1., sigma = 0.1;
   namespace cli = heat_diffusion_cli;
   const std::string usage =
       "usage: benchmark_local_kernel [DATA_DIR] [--levels L] [--first-level F] [--no-table-1] [--no-table-3]\n"
-      "                              [--time T] [--sigma S] [--repeat R]\n"
+      "                              [--no-spectral] [--time T] [--sigma S] [--repeat R]\n"
       "  --levels       Loop subdivisions of table 2, -1 (no table 2) to 4 (default 3: 1.6M vertices)\n"
       "  --first-level  the first level of table 2, 0 to 4 (default 0)\n"
       "  --time, --sigma  t (default 1) and sigma (default 0.1) of tables 1 and 2\n"
-      "  --repeat       runs of each kernel per level of table 2, 1 to 100 (default 1)\n";
+      "  --repeat       runs of each kernel per level of table 2, 1 to 100 (default 1)\n"
+      "  --no-spectral  table 2 without the spectral kernel\n";
   if(const auto exit_code = heat_diffusion_benchmark::read_command_line(
-         argc, argv, {"--no-table-1", "--no-table-3"}, {"--levels", "--first-level", "--time", "--sigma", "--repeat"},
+         argc, argv, {"--no-table-1", "--no-table-3", "--no-spectral"}, {"--levels", "--first-level", "--time", "--sigma", "--repeat"},
          usage, [&](const cli::Arguments& a) {
            data = heat_diffusion_benchmark::optional_argument(a, "DATA_DIR", data);
            const std::string levels_text = a.value("--levels", "3");
@@ -314,6 +327,7 @@ int main(int argc, char** argv)
                                     std::to_string(levels));
            table_1 = !a.flag("--no-table-1");
            table_3 = !a.flag("--no-table-3");
+           spectral = !a.flag("--no-spectral");
            t = cli::parse_number("--time", a.value("--time", "1"), 0., true);
            sigma = cli::parse_number("--sigma", a.value("--sigma", "0.1"), 0., true);
            repeat = int(cli::parse_count("--repeat", a.value("--repeat", "1"), 1, 100));
@@ -327,40 +341,55 @@ int main(int argc, char** argv)
     std::printf("\nTable 2: armadillo, Loop-subdivided, end to end to the features at k = 10 (t = %g, sigma = %g):"
                 " the local kernel, then at its earlier default tolerance 1e-4, then the spectral one"
                 " (m = 150, automatic coarse level) on the same mesh; total / local is against the first\n", t, sigma);
-    std::printf("| levels | n | kernel | NCC + L, B (+ eigenpairs) + A_t s | of which the balancing s (products,"
-                " share) | + F^10 and features (total) s | total / local | total us / vertex | memory before GiB |"
-                " peak GiB | regions min/mean/max (collapsed) |\n"
-                "|---|---|---|---|---|---|---|---|---|---|---|\n");
+    std::printf("| levels | n | kernel | NCC + L, B (+ eigenpairs) + A_t s | its CPU s (all threads) | of which the"
+                " balancing s (products, share) | + F^10 and features (total) s | total / local | total us / vertex |"
+                " memory before GiB | peak GiB | regions min/mean/max (collapsed) |\n"
+                "|---|---|---|---|---|---|---|---|---|---|---|---|\n");
     std::fflush(stdout);
     for(int level = first_level; level <= levels; ++level)
     {
-      std::vector<double> local_runs, previous_runs, spectral_runs, ratios, previous_ratios;
+      std::vector<double> local_runs, previous_runs, spectral_runs, ratios, previous_ratios, build_ratios,
+          build_cpu_ratios;
       for(int run = 0; run < repeat; ++run)
       {
-        const double local_seconds =
-            end_to_end_in_child(armadillo, level, t, sigma, HD::Heat_kernel_method::local, 0.);
-        const double previous_seconds =
-            end_to_end_in_child(armadillo, level, t, sigma, HD::Heat_kernel_method::local, local_seconds, 1e-4);
-        const double spectral_seconds =
-            end_to_end_in_child(armadillo, level, t, sigma, HD::Heat_kernel_method::spectral, local_seconds);
-        if(local_seconds > 0 && previous_seconds > 0 && spectral_seconds > 0)
+        const Run_seconds local = end_to_end_in_child(armadillo, level, t, sigma, HD::Heat_kernel_method::local, 0.);
+        const Run_seconds previous =
+            end_to_end_in_child(armadillo, level, t, sigma, HD::Heat_kernel_method::local, local.total, 1e-4);
+        const Run_seconds spectral_run =
+            spectral ? end_to_end_in_child(armadillo, level, t, sigma, HD::Heat_kernel_method::spectral, local.total)
+                     : Run_seconds();
+        if(local.total > 0 && previous.total > 0 && (!spectral || spectral_run.total > 0))
         {
-          local_runs.push_back(local_seconds);
-          previous_runs.push_back(previous_seconds);
-          spectral_runs.push_back(spectral_seconds);
-          ratios.push_back(spectral_seconds / local_seconds);
-          previous_ratios.push_back(previous_seconds / local_seconds);
+          local_runs.push_back(local.total);
+          previous_runs.push_back(previous.total);
+          previous_ratios.push_back(previous.total / local.total);
+          build_ratios.push_back(local.build / previous.build);
+          build_cpu_ratios.push_back(local.build_cpu / previous.build_cpu);
+          if(spectral)
+          {
+            spectral_runs.push_back(spectral_run.total);
+            ratios.push_back(spectral_run.total / local.total);
+          }
         }
       }
-      if(repeat > 1 && !ratios.empty())
+      if(repeat > 1 && !local_runs.empty())
       {
-        const auto [least, most] = std::minmax_element(ratios.begin(), ratios.end());
-        const auto [previous_least, previous_most] =
-            std::minmax_element(previous_ratios.begin(), previous_ratios.end());
-        std::printf("| %d | median of %zu runs each | local %.1f s, at 1e-4 %.1f s, spectral %.1f s | | | |"
-                    " 1e-4: %.2f (%.2f to %.2f); spectral: %.2f (%.2f to %.2f) | | | | |\n",
-                    level, ratios.size(), median(local_runs), median(previous_runs), median(spectral_runs),
-                    median(previous_ratios), *previous_least, *previous_most, median(ratios), *least, *most);
+        auto summary = [](const std::vector<double>& x) {
+          const auto [least, most] = std::minmax_element(x.begin(), x.end());
+          char text[64];
+          std::snprintf(text, sizeof(text), "%.2f (%.2f to %.2f)", median(x), *least, *most);
+          return std::string(text);
+        };
+        std::string spectral_text = "no spectral runs";
+        if(spectral)
+          spectral_text = "spectral " + summary(ratios);
+        std::printf("| %d | median of %zu runs each | local %.1f s, at 1e-4 %.1f s%s | NCC + A_t, local / 1e-4: %s,"
+                    " CPU %s | | | total / local: 1e-4 %s; %s | | | | |\n",
+                    level, local_runs.size(), median(local_runs), median(previous_runs),
+                    spectral ? (", spectral " + heat_diffusion_cli::format_number(median(spectral_runs)) + " s").c_str()
+                             : "",
+                    summary(build_ratios).c_str(), summary(build_cpu_ratios).c_str(), summary(previous_ratios).c_str(),
+                    spectral_text.c_str());
         std::fflush(stdout);
       }
     }

@@ -12,9 +12,11 @@
 //  - R runs of `heat_diffusion features FILE -k 10 --kernel local --json` under
 //    /usr/bin/time -v, alternating with R runs of the same command with
 //    `--kernel-tolerance 1e-4`, the local kernel's earlier default accuracy: the
-//    tool's stages (its --json timings), the wall time and the peak memory of the whole
-//    command, each run and the medians, and the ratios of the medians (default / 1e-4).
-// The machine may be shared: compare within a run.
+//    tool's stages (its --json timings), the wall time, the CPU time (user + system)
+//    and the peak memory of the whole command, each run and the medians, and the
+//    ratios of the medians (default / 1e-4).
+// The machine may be shared: compare within a run (the CPU times move less with the
+// other jobs than the wall times).
 //
 // Usage: benchmark_mesh_input [TOOL] [--dir DIR] [--levels L] [--repeat R] [--data DATA_DIR]
 //   TOOL: the heat_diffusion executable (default: the one next to this program); DIR
@@ -72,7 +74,7 @@ bool read_with_cgal(const std::string& path, Mesh& mesh)
 struct Tool_run
 {
   std::array<double, 5> stages{};  // read, ncc_and_local_operator, diffusion, features, write (s)
-  double wall = 0, peak_gib = 0;
+  double wall = 0, cpu = 0, peak_gib = 0;  // cpu: user + system seconds of all threads
   bool ok = false;
 };
 
@@ -120,10 +122,14 @@ Tool_run run_tool(const std::string& tool, const std::string& input, const std::
       total = 60 * total + std::atof(part.c_str());
     run.wall = total;
   }
+  // the CPU time of all its threads, less sensitive than the wall time to other jobs
+  const std::size_t user = t.find("User time (seconds): "), system = t.find("System time (seconds): ");
+  if(user != std::string::npos && system != std::string::npos)
+    run.cpu = std::atof(t.c_str() + user + 21) + std::atof(t.c_str() + system + 23);
   const std::size_t m = t.find("Maximum resident set size (kbytes): ");
   if(m != std::string::npos)
     run.peak_gib = std::atof(t.c_str() + m + 36) / (1024.0 * 1024.0);
-  run.ok = w != std::string::npos && m != std::string::npos &&
+  run.ok = w != std::string::npos && m != std::string::npos && user != std::string::npos && system != std::string::npos &&
            std::all_of(run.stages.begin(), run.stages.end(), [](double s) { return s >= 0; });
   return run;
 }
@@ -202,10 +208,10 @@ int main(int argc, char** argv)
 
     std::printf("  %s features FILE -k 10 --kernel local [--kernel-tolerance 1e-4] --json (seconds; peak GiB):\n",
                 tool.c_str());
-    std::printf("  %-6s %-8s %8s %12s %10s %9s %7s %8s %8s\n", "run", "setting", "read", "ncc+A_t", "steps",
-                "features", "write", "wall", "peak");
-    std::vector<std::vector<double>> columns[2] = {std::vector<std::vector<double>>(7),
-                                                   std::vector<std::vector<double>>(7)};
+    std::printf("  %-6s %-8s %8s %12s %10s %9s %7s %8s %8s %8s\n", "run", "setting", "read", "ncc+A_t", "steps",
+                "features", "write", "wall", "cpu", "peak");
+    std::vector<std::vector<double>> columns[2] = {std::vector<std::vector<double>>(8),
+                                                   std::vector<std::vector<double>>(8)};
     for(int r = 0; r < repeat; ++r)
       for(int setting = 0; setting < 2; ++setting)
       {
@@ -216,12 +222,14 @@ int main(int argc, char** argv)
                       setting_names[setting], dir.c_str());
           continue;
         }
-        std::printf("  %-6d %-8s %8.2f %12.2f %10.2f %9.2f %7.2f %8.2f %8.2f\n", r + 1, setting_names[setting],
-                    run.stages[0], run.stages[1], run.stages[2], run.stages[3], run.stages[4], run.wall, run.peak_gib);
+        std::printf("  %-6d %-8s %8.2f %12.2f %10.2f %9.2f %7.2f %8.2f %8.2f %8.2f\n", r + 1, setting_names[setting],
+                    run.stages[0], run.stages[1], run.stages[2], run.stages[3], run.stages[4], run.wall, run.cpu,
+                    run.peak_gib);
         for(int s = 0; s < 5; ++s)
           columns[setting][s].push_back(run.stages[s]);
         columns[setting][5].push_back(run.wall);
-        columns[setting][6].push_back(run.peak_gib);
+        columns[setting][6].push_back(run.cpu);
+        columns[setting][7].push_back(run.peak_gib);
       }
     if(columns[0][0].empty() || columns[1][0].empty())
     {
@@ -229,19 +237,19 @@ int main(int argc, char** argv)
       failed = true;
       continue;
     }
-    std::array<double, 7> medians[2];
+    std::array<double, 8> medians[2];
     for(int setting = 0; setting < 2; ++setting)
     {
-      for(int c = 0; c < 7; ++c)
+      for(int c = 0; c < 8; ++c)
         medians[setting][std::size_t(c)] = median(columns[setting][c]);
-      const std::array<double, 7>& m = medians[setting];
-      std::printf("  %-6s %-8s %8.2f %12.2f %10.2f %9.2f %7.2f %8.2f %8.2f\n", "median", setting_names[setting], m[0],
-                  m[1], m[2], m[3], m[4], m[5], m[6]);
+      const std::array<double, 8>& m = medians[setting];
+      std::printf("  %-6s %-8s %8.2f %12.2f %10.2f %9.2f %7.2f %8.2f %8.2f %8.2f\n", "median", setting_names[setting],
+                  m[0], m[1], m[2], m[3], m[4], m[5], m[6], m[7]);
     }
-    std::printf("  %-6s %-8s %8.2f %12.2f %10.2f %9.2f %7.2f %8.2f %8.2f\n", "ratio", "def/1e-4",
+    std::printf("  %-6s %-8s %8.2f %12.2f %10.2f %9.2f %7.2f %8.2f %8.2f %8.2f\n", "ratio", "def/1e-4",
                 medians[0][0] / medians[1][0], medians[0][1] / medians[1][1], medians[0][2] / medians[1][2],
                 medians[0][3] / medians[1][3], medians[0][4] / medians[1][4], medians[0][5] / medians[1][5],
-                medians[0][6] / medians[1][6]);
+                medians[0][6] / medians[1][6], medians[0][7] / medians[1][7]);
     std::printf("  (CGAL's reader on this file in this run: %.2f s)\n", median(cgal));
   }
   return failed ? 1 : 0;
