@@ -1354,7 +1354,9 @@ PYBIND11_MODULE(cgal_heat_diffusion, module)
                                message.find("is isolated") != std::string::npos ||
                                message.find("has zero area") != std::string::npos);
       PyErr_SetString(PyExc_ValueError,
-                      (message + (repairable ? "; cgal_heat_diffusion.repair(V, F) repairs the mesh" : "")).c_str());
+                      (point_set_binding::in_module_terms(message) +
+                       (repairable ? "; cgal_heat_diffusion.repair(V, F) repairs the mesh" : ""))
+                          .c_str());
     }
   });
   point_set_binding::add_point_set_functions(module);

@@ -71,6 +71,19 @@ inline std::unique_ptr<Point_set> make_point_set(py::handle P_object, py::handle
   return points;
 }
 
+// The package's advice in its messages on point sets, in the module's terms.
+inline std::string in_module_terms(std::string message)
+{
+  const std::pair<std::string, std::string> terms[] = {
+      {"with the normal_map named parameter", "as N (n x 3)"},
+      {"or a normal_map, may help", "or normals N, may help"},
+      {"or more neighbours", "or more neighbours (neighbors=)"}};
+  for(const auto& term : terms)
+    for(std::size_t at = message.find(term.first); at != std::string::npos; at = message.find(term.first, at + 1))
+      message.replace(at, term.first.size(), term.second);
+  return message;
+}
+
 // neighbors (None: the package's defaults::number_of_neighbors) and neighbor_radius
 // (None: the k nearest); their values are the package's to check.
 struct Neighbourhood
@@ -277,8 +290,8 @@ public:
     const std::optional<double> c = optional_number(feature_threshold_object, function, "feature_threshold");
     const Eigen::VectorXd f0 = field.is_none() ? ns_vector() : field_vector(field, function);
     return features_list(interruptible([&](const auto& progress) {
-      return HD::detect_point_set_multiscale_features(*diffusion_, f0, ks,
-                                                      HD::parameters::combine(progress, HD::parameters::feature_threshold(c)));
+      return HD::detect_point_set_multiscale_features(
+          *diffusion_, f0, ks, HD::parameters::combine(progress, HD::parameters::feature_threshold(c)));
     }));
   }
 

@@ -325,8 +325,10 @@ done
 expect 1 'b9.ply: .*could not orient' -- "$tool" ncc "$data/b9.ply" -o b9_ns.ply
 expect 1 'cube.xyz: CGAL::Heat_diffusion: the point set has 8 points, fewer than k \+ 1 = 9' -- "$tool" ncc "$points/cube.xyz" -o c.ply
 expect 2 "--neighbors must be at least 2" -- "$tool" ncc "$points/kitten.xyz" --neighbors 1
-expect 2 "--neighbors must be a whole number from 0 to 10000" -- "$tool" features "$points/kitten.xyz" --neighbors 2.5
+expect 2 "--neighbors must be a whole number from 0 to 1000" -- "$tool" features "$points/kitten.xyz" --neighbors 2.5
 expect 2 "--neighbor-radius must be a number > 0" -- "$tool" diffuse "$points/kitten.xyz" --neighbor-radius 0
+expect 1 'kitten.xyz: CGAL::Heat_diffusion: point 14 has 1 neighbour\(s\) within --neighbor-radius; a fan needs 2' -- \
+  "$tool" ncc "$points/kitten.xyz" --neighbor-radius 0.02 -o kr2.ply
 expect 2 '--neighbors concerns point sets: .*fandisk.off is read as a mesh' -- "$tool" ncc "$data/fandisk.off" --neighbors 8
 expect 2 'on a point set the diffusion has the local kernel only' -- "$tool" diffuse "$points/kitten.xyz" -m 20
 expect 2 'on a point set the diffusion has the local kernel only' -- "$tool" features "$points/kitten.xyz" --kernel spectral

@@ -40,7 +40,8 @@ inline std::string in_tool_terms(std::string message)
   const std::pair<std::string, std::string> terms[] = {
       {"with the normal_map named parameter", "in the file (PWN, XYZ with 6 numbers a line, or PLY with nx, ny, nz)"},
       {"or a normal_map, may help", "or normals in the file, may help"},
-      {"or more neighbours", "or more neighbours (--neighbors)"}};
+      {"or more neighbours", "or more neighbours (--neighbors)"},
+      {"within the neighbor_radius", "within --neighbor-radius"}};
   for(const auto& term : terms)
     for(std::size_t at = message.find(term.first); at != std::string::npos; at = message.find(term.first, at + 1))
       message.replace(at, term.first.size(), term.second);
@@ -97,8 +98,9 @@ inline void write_point_fields_ply(Output_files& files, const std::string& path,
   write_fields_ply(files, path, vertices, fields, half_range);
 }
 
-// The JSON account of the point set: its size, the neighbourhoods (the radius if given), where the normals
-// come from, its border points and the orientation conflicts of estimated normals.
+// The JSON account of the point set: its size, the neighbourhoods (the radius if
+// given), where the normals come from, its border points and the orientation conflicts
+// of estimated normals.
 inline Json_object point_set_json(const Point_set& points, const Neighbourhood_options& nb, const Point_set_NCC& ncc)
 {
   std::size_t border = 0;
@@ -277,7 +279,8 @@ inline void features_on_points(Run& r, const std::optional<double>& c, const std
   const std::unique_ptr<Point_set_diffusion>& diffusion = setup.diffusion;
   // The fields F^k once, then the features of each: what detect_point_set_multiscale_features()
   // does, keeping the fields for the outputs.
-  const std::vector<Eigen::VectorXd> fields = diffuse_point_field(r, *diffusion, initial_point_field(o.field, *diffusion));
+  const std::vector<Eigen::VectorXd> fields =
+      diffuse_point_field(r, *diffusion, initial_point_field(o.field, *diffusion));
   r.timer.stop("diffusion");
   std::vector<HD::Features_at_scale<std::size_t> > features;
   for(const Eigen::VectorXd& field : fields)

@@ -24,9 +24,10 @@ namespace heat_diffusion_cli {
 
 namespace HD = CGAL::Heat_diffusion;
 
-// The largest neighbour count: far beyond what a fan needs, and bounded so that the
-// neighbour lists of a large point set (n k indices) stay allocatable.
-constexpr double maximum_neighbors = 10000;
+// The largest neighbour count: far beyond what a fan needs (a one-ring has about 6
+// points), and bounded so that the neighbour lists (n k indices) and the triangulations
+// of k points, one per point, stay within what a run of a large point set can afford.
+constexpr double maximum_neighbors = 1000;
 
 // --neighbors K and --neighbor-radius R, as given (empty: not given).
 struct Neighbourhood_options
@@ -81,7 +82,7 @@ inline std::string neighbourhood_options_help()
 {
   return help_option("--neighbors K",
                      "point sets only: the neighbours of each point whose Delaunay triangulation on the tangent plane "
-                     "makes its fan, 2 to 10000 (default " + std::to_string(HD::defaults::number_of_neighbors) +
+                     "makes its fan, 2 to 1000 (default " + std::to_string(HD::defaults::number_of_neighbors) +
                          "); with --neighbor-radius, at most that many of those within the radius (0: all)") +
          help_option("--neighbor-radius R",
                      "point sets only: the neighbours within the distance R (in the file's units) instead of the K "

@@ -165,9 +165,10 @@ inline std::vector<std::vector<std::size_t> > find_neighbours(const std::vector<
   if(bad < n)
   {
     std::ostringstream os;
-    os << "coincides with point " << problems.other[bad] << " to double precision in a bounding box whose largest side is "
-       << extent << "; the package needs distinct points (CGAL::grid_simplify_point_set() merges duplicates; an"
-       << " outlier far from the others makes near points coincide)";
+    os << "coincides with point " << problems.other[bad]
+       << " to double precision in a bounding box whose largest side is " << extent
+       << "; the package needs distinct points (CGAL::grid_simplify_point_set() merges duplicates; an outlier far"
+       << " from the others makes near points coincide)";
     throw_point_error(bad, os.str());
   }
   return neighbours;
