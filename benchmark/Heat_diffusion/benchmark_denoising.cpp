@@ -3,9 +3,9 @@
 //
 // Denoising quality of denoise_mesh() against published filters, all run in the same
 // process on the same noisy meshes:
-//  - Guided Mesh Normal Filtering (GNF, Zhang et al. 2015) and Bilateral Normal
-//    Filtering (BNF, Zheng et al. 2011), at their papers' default parameters
-//    (test/Heat_diffusion/baselines/);
+//  - Guided Mesh Normal Filtering (GNF, Zhang et al. 2015), Bilateral Normal
+//    Filtering (BNF, Zheng et al. 2011) and L0 minimization (He and Schaefer 2013), at
+//    their papers' default parameters (test/Heat_diffusion/baselines/);
 //  - bilateral mesh denoising (Fleishman, Drori and Cohen-Or 2003), best of a grid of
 //    its two widths and iteration counts (test/Heat_diffusion/mesh_measures.h);
 //  - Taubin's lambda|mu smoothing, best of a range of iteration counts;
@@ -34,7 +34,7 @@
 // intersecting face pairs beyond those of the clean mesh; the time of the chosen setting.
 //
 // Usage: benchmark_denoising [--quick] [--signature] [--normal-only] [--clean] [--gaussian] [--impulsive]
-//                            [--half tune|check] [--noise x]... [mesh ...]
+//                            [--baselines list] [--half tune|check] [--noise x]... [mesh ...]
 //   --quick       fandisk, anchor and elephant at noise 0.3 and 0.5 along the normals
 //   --signature   also run the paper's pipeline (slow)
 //   --normal-only only the noise along the normals (and the impulsive noise)
@@ -42,6 +42,9 @@
 //                 has no noise
 //   --gaussian    only the Gaussian noise on every vertex
 //   --impulsive   only the impulsive noise
+//   --baselines l only these baselines, a comma-separated list of GNF, BNF, L0, bilateral,
+//                 Taubin, smooth_shape, or none (default: all; the grids of the last three
+//                 take most of the time)
 //   --half h      only the meshes of the tune or the check half of the set
 //   --noise x     only this noise level, in mean edge lengths (repeatable; for the
 //                 impulsive noise, the deviation of the impulses)
@@ -54,6 +57,7 @@
 #include "mesh_measures.h"
 #include "baselines/bilateral_normal_filtering.h"
 #include "baselines/guided_normal_filtering.h"
+#include "baselines/l0_minimization.h"
 #include "baselines/taubin_smoothing.h"
 
 #include <CGAL/Heat_diffusion/denoising.h>
@@ -348,26 +352,31 @@ int main(int argc, char** argv)
 {
   bool quick = false, signature = false, normal_only = false, clean = false, gaussian_only = false,
        impulsive_only = false;
+  // The baselines, in the order of their columns; the tuned grids are the slow ones.
+  const std::vector<std::string> baseline_names = {"GNF", "BNF", "L0", "bilateral", "Taubin", "smooth_shape"};
+  std::vector<std::string> baselines = baseline_names;
   std::string half;
   std::vector<double> noises;
   std::vector<Set_entry> set;
   namespace cli = heat_diffusion_cli;
   const std::string usage =
       "usage: benchmark_denoising [--quick] [--signature] [--normal-only] [--clean] [--gaussian] [--impulsive]\n"
-      "                           [--half tune|check] [--noise x]... [mesh ...]\n"
+      "                           [--baselines list] [--half tune|check] [--noise x]... [mesh ...]\n"
       "  --quick        fandisk, anchor and elephant at noise 0.3 and 0.5 along the normals\n"
       "  --signature    also run the paper's pipeline (slow)\n"
       "  --normal-only  only the noise along the normals (and the impulsive noise)\n"
       "  --clean        also each clean mesh (noise 0)\n"
       "  --gaussian     only the Gaussian noise on every vertex\n"
       "  --impulsive    only the impulsive noise (10 % and 20 % of the vertices)\n"
+      "  --baselines l  only these baselines, comma-separated: GNF, BNF, L0, bilateral, Taubin,\n"
+      "                 smooth_shape, or none (default: all)\n"
       "  --half h       only the meshes of the half h of the set: tune or check\n"
       "  --noise x      only this noise level, in mean edge lengths, > 0 and <= 10 (repeatable;\n"
       "                 impulsive noise: the deviation of the impulses)\n"
       "  mesh           a file name in CGAL's data set, or a path (default: the whole set)\n";
   if(const auto exit_code = heat_diffusion_benchmark::read_command_line(
          argc, argv, {"--quick", "--signature", "--normal-only", "--clean", "--gaussian", "--impulsive"},
-         {"--noise", "--half"}, usage,
+         {"--noise", "--half", "--baselines"}, usage,
          [&](const cli::Arguments& a) {
            quick = a.flag("--quick");
            signature = a.flag("--signature");
@@ -375,6 +384,18 @@ int main(int argc, char** argv)
            clean = a.flag("--clean");
            gaussian_only = a.flag("--gaussian");
            impulsive_only = a.flag("--impulsive");
+           for(const std::string& list : a.values("--baselines"))
+           {
+             baselines.clear();
+             std::istringstream items(list);
+             for(std::string item; std::getline(items, item, ',');)
+               if(item == "none")
+                 continue;
+               else if(std::find(baseline_names.begin(), baseline_names.end(), item) != baseline_names.end())
+                 baselines.push_back(item);
+               else
+                 throw cli::Usage_error("--baselines: unknown baseline '" + item + "'");
+           }
            if(gaussian_only && impulsive_only)
              throw cli::Usage_error("--gaussian and --impulsive exclude each other");
            for(const std::string& h : a.values("--half"))
@@ -417,10 +438,16 @@ int main(int argc, char** argv)
       for(double fraction : {0.1, 0.2})
         inputs.push_back({Noise::impulsive, level, fraction});
 
-  const std::vector<std::string> methods = {"denoise_mesh", "GNF", "BNF", "bilateral (tuned)", "Taubin (tuned)",
-                                            "smooth_shape (tuned)", "signature diffusion"};
-  // Mean MAD and RMS per method, by noise family and half of the set.
-  std::map<std::string, std::vector<double> > mads, rmss;
+  // The methods' names in the table: the noisy input, denoise_mesh, the baselines run, and
+  // the paper's pipeline if asked.
+  std::vector<std::string> methods = {"noisy input", "denoise_mesh"};
+  for(const std::string& b : baselines)
+    methods.push_back(b == "bilateral" || b == "Taubin" || b == "smooth_shape" ? b + " (tuned)" : b);
+  if(signature)
+    methods.push_back("signature diffusion");
+  const std::size_t last_baseline = 1 + baselines.size();  // methods[2 .. last_baseline]
+  // Mean MAD, RMS and tangential RMS per method, by noise family and half of the set.
+  std::map<std::string, std::vector<double> > mads, rmss, tangential_rmss;
   std::vector<std::string> families;
   std::vector<std::string> losing_rows, volume_rows, rms_rows;
   std::size_t closed_noisy_rows = 0;
@@ -472,11 +499,23 @@ int main(int argc, char** argv)
                                       ? "input, volume std " + format(volume_spread, 2) + " %"
                                       : std::string("input")));
       scores.push_back(run_once(ref, noisy, [](Mesh& m) { HD::denoise_mesh(m); }, "defaults"));
-      scores.push_back(run_once(ref, noisy, [](Mesh& m) { B::guided_normal_filtering(m); }, "paper's defaults"));
-      scores.push_back(run_once(ref, noisy, [](Mesh& m) { B::bilateral_normal_filtering(m); }, "paper's defaults"));
-      scores.push_back(best_bilateral(ref, noisy));
-      scores.push_back(best_taubin(ref, noisy));
-      scores.push_back(best_smooth_shape(ref, noisy));
+      for(const std::string& b : baselines)
+        if(b == "GNF")
+          scores.push_back(run_once(ref, noisy, [](Mesh& m) { B::guided_normal_filtering(m); }, "paper's defaults"));
+        else if(b == "BNF")
+          scores.push_back(run_once(ref, noisy, [](Mesh& m) { B::bilateral_normal_filtering(m); }, "paper's defaults"));
+        else if(b == "L0")
+          scores.push_back(run_once(ref, noisy, [](Mesh& m) {
+            B::Face_mesh fm = B::make_face_mesh(m);
+            B::l0_minimization(fm);
+            B::write_points(fm, m);
+          }, "paper's defaults"));
+        else if(b == "bilateral")
+          scores.push_back(best_bilateral(ref, noisy));
+        else if(b == "Taubin")
+          scores.push_back(best_taubin(ref, noisy));
+        else
+          scores.push_back(best_smooth_shape(ref, noisy));
       if(signature)
         scores.push_back(run_once(ref, noisy, [](Mesh& m) {
           HD::denoise_mesh(m, HD::parameters::denoising_method(HD::Denoising_method::signature_diffusion));
@@ -488,18 +527,19 @@ int main(int argc, char** argv)
       for(std::size_t k = 0; k < scores.size(); ++k)
       {
         const Score& s = scores[k];
-        const std::string method = k == 0 ? "noisy input" : methods[k - 1];
-        if(k >= 2 && k <= 6)
+        const std::string& method = methods[k];
+        if(k >= 2 && k <= last_baseline)
           best_baseline = (std::min)(best_baseline, s.mad);
         mads[group + "|" + method].push_back(s.mad);
         rmss[group + "|" + method].push_back(s.rms);
+        tangential_rmss[group + "|" + method].push_back(s.tangential_rms);
         std::cout << row << method << " | " << format(s.mad) << " | " << format(s.rms, 2) << " | "
                   << format(s.tangential_rms, 2) << " | "
                   << (ref.closed ? format(s.volume_change, 2) : std::string("open")) << " | " << s.flipped << " | "
                   << s.new_intersections << " | " << format(s.seconds, 2) << " | " << s.setting << " |\n";
       }
       const std::string row_name = name + ", noise " + noise.label() + " " + noise.direction();
-      if(scores[1].mad > 1.1 * best_baseline)
+      if(!baselines.empty() && scores[1].mad > 1.1 * best_baseline)
         losing_rows.push_back(row_name + ": " + format(scores[1].mad) + " against " + format(best_baseline));
       if(noise.kind != Noise::none && scores[1].rms > scores[0].rms)
         rms_rows.push_back(row_name + ": RMS " + format(scores[1].rms, 3) + " (tangential " +
@@ -523,25 +563,28 @@ int main(int argc, char** argv)
                "noise: 10 % or 20 % of the vertices moved along their normals (seed 7).\n";
   for(const std::string& group : families)
   {
-    std::cout << "\nMean MAD and RMS, " << group << " (" << mads[group + "|denoise_mesh"].size() << " rows):\n";
-    for(std::size_t k = 0; k <= methods.size(); ++k)
+    std::cout << "\nMean MAD, RMS and tangential RMS, " << group << " (" << mads[group + "|denoise_mesh"].size() << " rows):\n";
+    for(const std::string& method : methods)
     {
-      const std::string method = k == 0 ? "noisy input" : methods[k - 1];
       const std::vector<double>& m = mads[group + "|" + method];
       const std::vector<double>& r = rmss[group + "|" + method];
+      const std::vector<double>& t = tangential_rmss[group + "|" + method];
       if(m.empty())
         continue;
-      double mad_sum = 0, rms_sum = 0;
+      double mad_sum = 0, rms_sum = 0, tangential_sum = 0;
       for(std::size_t i = 0; i < m.size(); ++i)
       {
         mad_sum += m[i];
         rms_sum += r[i];
+        tangential_sum += t[i];
       }
       std::cout << "  " << method << ": MAD " << format(mad_sum / double(m.size()), 4) << ", RMS "
-                << format(rms_sum / double(r.size()), 3) << "\n";
+                << format(rms_sum / double(r.size()), 3) << ", tangential RMS "
+                << format(tangential_sum / double(t.size()), 3) << "\n";
     }
   }
-  std::cout << "Rows where denoise_mesh is more than 10 % above the best baseline: " << losing_rows.size() << "\n";
+  if(!baselines.empty())
+    std::cout << "Rows where denoise_mesh is more than 10 % above the best baseline: " << losing_rows.size() << "\n";
   for(const std::string& row : losing_rows)
     std::cout << "  " << row << "\n";
   std::cout << "Noisy rows where denoise_mesh's RMS exceeds the noisy input's: " << rms_rows.size() << "\n";

@@ -10,7 +10,7 @@
 #include <CGAL/Heat_diffusion/denoising_report.h>
 #include <CGAL/Heat_diffusion/parameters.h>
 #include <CGAL/Heat_diffusion/reconstruction.h>
-#include <CGAL/Heat_diffusion/internal/Denoising/normal_filtering.h>
+#include <CGAL/Heat_diffusion/internal/Denoising/denoising_chain.h>
 #include <CGAL/Heat_diffusion/internal/Denoising/self_intersection_repair.h>
 #include <CGAL/Heat_diffusion/internal/Denoising/signature_normals.h>
 #include <CGAL/Heat_diffusion/internal/errors.h>
@@ -175,6 +175,19 @@ namespace Heat_diffusion {
 /// shape's detail add in quadrature: the estimate of 1 then measured the shape alone,
 /// as on clean CAD meshes where it reads rounding errors or the facets of a coarse
 /// tessellation).
+/// Where the result is that of the isotropic filtering of 5, or of 6 from the fit
+/// (`Denoising_stage::curved`, `Denoising_stage::needle_fit`), half of the vertices' drift
+/// within the surface is then undone: the fit and the relaxations slide the vertices along
+/// the surface, which raised the vertex error of organic meshes above the noisy input's
+/// where the noise was along the normals. With \f$ q_i \f$ the result, \f$ p_i \f$ the input
+/// and \f$ t_i \f$ the component of \f$ p_i - q_i \f$ in the tangent plane of the result's
+/// vertex normal, each vertex moves, in 3 rounds, to the point of its own one-ring of
+/// faces closest to \f$ q_i + 0.5\, t_i \f$ (on its ring, it stays on the result's surface).
+/// Not all of it: that would also put back the part of noise in random directions that
+/// lies within the surface, which the relaxations removed. Where even half of it does
+/// (strong noise in random directions), the restored triangles are uneven and tilt their
+/// normals: the drift is undone only if the area-weighted mean over the faces f of the
+/// mean \f$ |n_f - n_g| \f$ over the faces g sharing a vertex with f grows by at most 1 %.
 /// Last, the faces of the result that intersect each other
 /// (`Polygon_mesh_processing::self_intersections()`, with `geom_traits`) are untangled:
 /// in rounds, the vertices of the intersecting faces are smoothed, by the gentlest of
@@ -317,6 +330,7 @@ namespace Heat_diffusion {
 /// more (\f$ S \f$), and for \f$ W \f$ (needles with \f$ \nu \geq 1 \f$, eroded thin walls) up
 /// to 10 numerical factorisations of one symbolic analysis (relinearised: up to 30
 /// factorisations), and for \f$ 0 < \nu < 1 \f$ a conjugate gradient solve of 3n unknowns;
+/// undoing the drift is linear in the size of `tm`;
 /// the untangling finds the intersecting faces of the whole mesh once (box intersection,
 /// near-linear in n) and, if there are any, at most 4 times per round and once more after
 /// the rounds among the faces near those that moved (see `benchmark_denoising` for times

@@ -12,7 +12,6 @@
 
 #include <CGAL/Heat_diffusion/denoising_report.h>
 #include <CGAL/Heat_diffusion/internal/Denoising/face_adjacency.h>
-#include <CGAL/Heat_diffusion/internal/Denoising/impulse_removal.h>
 #include <CGAL/Heat_diffusion/internal/Denoising/needle_surface_fit.h>
 #include <CGAL/Heat_diffusion/internal/Denoising/noise_level.h>
 #include <CGAL/Heat_diffusion/internal/Denoising/normal_fit.h>
@@ -472,34 +471,6 @@ inline std::vector<Eigen::Vector3d> filter_normals_of_input(const Indexed_mesh& 
     for(std::size_t i = 0; i < n; ++i)
       points[i] = needle_weight * points[i] + (1. - needle_weight) * small_steps[i];
   unless_eroded(Denoising_stage::needle_fit);
-  return points;
-}
-
-// The default algorithm: the outlier test (remove_impulses()), then the filter above on
-// its result, which is then the filter's input (its noise level, displacements and
-// shrinkage are measured from there). The filter alone leaves impulses: its noise level,
-// a median, reads the clean majority (fandisk, impulses of 1 mean edge length on a fifth
-// of the vertices: 18.8 degrees, the noisy input 20.2). The filter still runs after the
-// test, for noise that is also Gaussian (fandisk, 0.1 everywhere and impulses of 0.5 on
-// a tenth: the test alone 13.2, the filter alone 2.01, both 1.80). A user normal_sigma
-// runs the filter alone, as asked.
-inline std::vector<Eigen::Vector3d> filter_normals(const Indexed_mesh& mesh, const Normal_filtering_options& options,
-                                                   const Progress& reporter, Denoising_report* report = nullptr)
-{
-  std::vector<Eigen::Vector3d> cleaned = mesh.points;
-  const std::size_t impulses =
-      options.normal_sigma > 0 || options.iterations == 0 ? 0 : remove_impulses(mesh, cleaned);
-  if(impulses == 0)
-    return filter_normals_of_input(mesh, options, reporter, report);
-  Indexed_mesh cleaned_mesh = mesh;
-  cleaned_mesh.points.swap(cleaned);
-  std::vector<Eigen::Vector3d> points = filter_normals_of_input(cleaned_mesh, options, reporter, report);
-  if(report)
-  {
-    report->impulses = impulses;
-    if(report->stage == Denoising_stage::unchanged)
-      report->stage = Denoising_stage::impulses;
-  }
   return points;
 }
 
