@@ -27,7 +27,8 @@ cmake -S . -B "$build" -G Ninja -DCMAKE_BUILD_TYPE=Debug -DCGAL_DO_NOT_WARN_ABOU
       -DCGAL_HEAT_DIFFUSION_SANITIZE=ON -DCGAL_HEAT_DIFFUSION_BUILD_FUZZERS=ON \
       -DCGAL_HEAT_DIFFUSION_BUILD_EXAMPLES=OFF -DCGAL_HEAT_DIFFUSION_BUILD_BENCHMARKS=OFF \
       -DCGAL_HEAT_DIFFUSION_BUILD_PYTHON=OFF \
-      -DCGAL_HEAT_DIFFUSION_DATA_DIR="$PWD/build/data/meshes" >/dev/null
+      -DCGAL_HEAT_DIFFUSION_DATA_DIR="$PWD/build/data/meshes" \
+      -DCGAL_HEAT_DIFFUSION_POINT_DATA_DIR="$PWD/build/data/points_3" >/dev/null
 # Not under the sanitizers, by CTest label: the doc, install, add_subdirectory
 # (doc, install) and compile-failure (compile) checks, where no package code runs, and
 # the three slowest suites (not_sanitized, test/Heat_diffusion/CMakeLists.txt), 10 to
