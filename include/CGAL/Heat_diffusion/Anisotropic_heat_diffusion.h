@@ -8,12 +8,11 @@
 
 #include <CGAL/Heat_diffusion/Edge_weighted_heat_kernel.h>
 #include <CGAL/Heat_diffusion/heat_kernel_method.h>
+#include <CGAL/Heat_diffusion/internal/diffusion_construction.h>
 #include <CGAL/Heat_diffusion/internal/diffusion_operator.h>
 #include <CGAL/Heat_diffusion/internal/errors.h>
 #include <CGAL/Heat_diffusion/internal/heat_operators.h>
-#include <CGAL/Heat_diffusion/internal/heat_regions.h>
 #include <CGAL/Heat_diffusion/internal/kernel_columns.h>
-#include <CGAL/Heat_diffusion/internal/local_heat_kernel.h>
 #include <CGAL/Heat_diffusion/internal/progress.h>
 #include <CGAL/Heat_diffusion/internal/vertex_fields.h>
 #include <CGAL/Heat_diffusion/normal_controlled_coordinates.h>
@@ -22,7 +21,6 @@
 
 #include <Eigen/Sparse>
 
-#include <algorithm>
 #include <cmath>
 #include <functional>
 #include <memory>
@@ -207,7 +205,10 @@ public:
     const internal::Indexed_mesh& mesh = ncc_->indexed_mesh();
     if(mesh.number_of_vertices() == 0)
       internal::throw_invalid_input("Anisotropic_heat_diffusion: the mesh is empty");
-    build_local(t, tolerance, internal::assemble_heat_operators(mesh, ncc_->data(), sigma_), progress);
+    time_ = t;
+    internal::build_local_diffusion_operator(mesh, internal::assemble_heat_operators(mesh, ncc_->data(), sigma_), t,
+                                             construction_options(tolerance), progress, diffusion_operator_,
+                                             statistics_);
   }
 
   /// Builds \f$ A_t \f$ from an existing (spectral) kernel, which must outlive this object.
@@ -312,23 +313,7 @@ public:
                                        const NamedParameters& np = parameters::default_values()) const
   {
     check_field(field);
-    const internal::Progress progress = internal::progress_of(np);
-    std::vector<Eigen::VectorXd> result(steps.size());
-    const std::size_t last = steps.empty() ? 0 : *std::max_element(steps.begin(), steps.end());
-    Eigen::VectorXd current = field, next(field.size());
-    internal::Diffusion_operator::Product_scratch scratch = diffusion_operator_.make_scratch();
-    for(std::size_t k = 0;; ++k)
-    {
-      for(std::size_t s = 0; s < steps.size(); ++s)
-        if(steps[s] == k)
-          result[s] = current;
-      if(k == last)
-        break;
-      diffusion_operator_.apply(current, next, scratch);
-      current.swap(next);
-      progress.report(double(k + 1) / double(last), "the diffusion");
-    }
-    return result;
+    return internal::diffuse_steps(diffusion_operator_, field, steps, internal::progress_of(np));
   }
 
   /// Diffuses the field `field_in` by `number_of_steps` steps and writes it to `field_out`;
@@ -393,58 +378,21 @@ private:
       build(internal::Spectral_columns{kernel_->eigenvectors(), mass_diagonal});
   }
 
-  // (takes the operators: L and B live only while the kernel's columns are computed, and
-  // are freed, with the kernel, before A_t is completed: A_t is all the diffusion needs)
-  void build_local(double t, double tolerance, internal::Heat_operators operators, const internal::Progress& progress)
-  {
-    time_ = t;
-    Eigen::VectorXd column_sums, peaks;
-    {
-      const internal::Local_heat_kernel kernel(ncc_->indexed_mesh(), operators.stiffness, operators.mass, t,
-                                               tolerance);
-      // Sources cluster after cluster: consecutive sources share their patch and its
-      // factorisations.
-      compute_heat_regions(internal::Local_columns{kernel}, kernel.source_order(), kernel.cluster_begin(), progress,
-                           column_sums, peaks);
-    }
-    // (swapped with empty matrices: an assignment would keep their memory)
-    Eigen::SparseMatrix<double>().swap(operators.stiffness);
-    Eigen::SparseMatrix<double>().swap(operators.mass);
-    complete_operator(column_sums, peaks, progress);
-  }
-
   template <typename Columns>
   void build_from_columns(const Columns& columns, const std::vector<std::size_t>& order,
                           const std::vector<std::size_t>& group_begin, const internal::Progress& progress)
   {
+    // (the spectral kernels ignore the local kernel's tolerance)
+    const internal::Diffusion_construction_options options = construction_options(defaults::local_kernel_tolerance);
     Eigen::VectorXd column_sums, peaks;
-    compute_heat_regions(columns, order, group_begin, progress, column_sums, peaks);
-    complete_operator(column_sums, peaks, progress);
+    internal::compute_heat_regions(columns, ncc_->indexed_mesh(), order, group_begin, options, progress,
+                                   diffusion_operator_, statistics_, column_sums, peaks);
+    internal::complete_diffusion_operator(column_sums, peaks, options, progress, diffusion_operator_);
   }
 
-  // The heat regions and the kernel values on them (internal::build_heat_regions()).
-  template <typename Columns>
-  void compute_heat_regions(const Columns& columns, const std::vector<std::size_t>& order,
-                            const std::vector<std::size_t>& group_begin, const internal::Progress& progress,
-                            Eigen::VectorXd& column_sums, Eigen::VectorXd& peaks)
+  internal::Diffusion_construction_options construction_options(double local_kernel_tolerance) const
   {
-    const bool balanced = diffusion_operator_.is_balanced();
-    const internal::Heat_region_options options{threshold(), maximum_region_size, !balanced, spectral_group_size};
-    // (the balancing takes a few products with K: a small part of the whole)
-    internal::build_heat_regions(columns, ncc_->indexed_mesh(), order, group_begin, options,
-                                 balanced ? progress.part(0., 0.95) : progress, diffusion_operator_.kernel_matrix(),
-                                 statistics_, column_sums, peaks);
-  }
-
-  // A_t from the kernel values: their matrix made ready for products and, balanced,
-  // balanced.
-  void complete_operator(const Eigen::VectorXd& column_sums, const Eigen::VectorXd& peaks,
-                         const internal::Progress& progress)
-  {
-    diffusion_operator_.kernel_matrix().finish();
-    if(diffusion_operator_.is_balanced())
-      diffusion_operator_.balance(column_sums, peaks, balancing_tolerance, maximum_balancing_iterations,
-                                  progress.part(0.95, 1.));
+    return {threshold(), maximum_region_size, local_kernel_tolerance};
   }
 
   // operator_matrix(), made on the first call (thread-safe), shared by copies.
@@ -453,17 +401,6 @@ private:
     std::once_flag once;
     Sparse_matrix matrix;
   };
-
-  // The groups of sources of the spectral kernels (which share no work): enough columns
-  // for a group's rows to be few per column.
-  static constexpr std::size_t spectral_group_size = 64;
-
-  // The balancing stops at max_i |(D K D 1)_i - 1| <= balancing_tolerance; the
-  // correction of the diagonal then makes the sums 1 to rounding. The tolerance only
-  // bounds how far A_t is from D K D exactly: the local kernel's own error, 10^-4 (the
-  // balancing's products are a few per cent of the construction of A_t at any size).
-  static constexpr double balancing_tolerance = 1e-4;
-  static constexpr std::size_t maximum_balancing_iterations = 1000;
 
   // The spectral kernel (owned when built from the mesh, borrowed when given), none
   // with the local method; the NCC, the kernel's or the local method's own.

@@ -198,11 +198,9 @@ private:
     return normalization;
   }
 
-  // The values of Anisotropic_heat_diffusion (its spectral_group_size, balancing_tolerance
-  // and maximum_balancing_iterations), and the local kernel's accuracy.
   internal::Diffusion_construction_options construction_options() const
   {
-    return {threshold(), maximum_region_size, 64, 1e-4, 1000, kernel_tolerance_};
+    return {threshold(), maximum_region_size, kernel_tolerance_};
   }
 
   struct Column_major_copy

@@ -1,9 +1,9 @@
 // Copyright (c) 2026 The CGAL Heat_diffusion developers.
 // SPDX-License-Identifier: LGPL-3.0-or-later
 //
-// The construction of A_t from a heat kernel's columns, and the diffusion steps with it:
-// the steps of Anisotropic_heat_diffusion's local method, on any Indexed_mesh layout (a
-// mesh's, or a point set's: Point_set_anisotropic_heat_diffusion).
+// The construction of A_t from a heat kernel's columns, and the diffusion steps with it,
+// on any Indexed_mesh layout: a mesh's (Anisotropic_heat_diffusion, both kernels) or a
+// point set's (Point_set_anisotropic_heat_diffusion).
 
 #ifndef CGAL_HEAT_DIFFUSION_INTERNAL_DIFFUSION_CONSTRUCTION_H
 #define CGAL_HEAT_DIFFUSION_INTERNAL_DIFFUSION_CONSTRUCTION_H
@@ -28,14 +28,26 @@ namespace CGAL {
 namespace Heat_diffusion {
 namespace internal {
 
+// The groups of sources of the spectral kernels (which share no work): enough columns
+// for a group's rows to be few per column.
+constexpr std::size_t spectral_group_size = 64;
+
+// The balancing stops at max_i |(D K D 1)_i - 1| <= balancing_tolerance; the correction
+// of the diagonal then makes the sums 1 to rounding. The tolerance only bounds how far
+// A_t is from D K D exactly: at most the local kernel's own error (1e-2 by default, 1e-4
+// at the earlier default), and the balancing's products are a few per cent of the
+// construction of A_t at any size.
+constexpr double balancing_tolerance = 1e-4;
+constexpr std::size_t maximum_balancing_iterations = 1000;
+
 struct Diffusion_construction_options
 {
   double threshold;                        // tau(t)
   std::size_t maximum_region_size;         // regions stop growing at this many vertices
-  std::size_t group_size;                  // the groups of sources without a kernel's own grouping
-  double balancing_tolerance;              // max_i |(D K D 1)_i - 1| at which the balancing stops
-  std::size_t maximum_balancing_iterations;
   double local_kernel_tolerance;           // of Local_heat_kernel
+  std::size_t group_size = spectral_group_size;  // the groups of sources without a kernel's own grouping
+  double balancing_tolerance = internal::balancing_tolerance;  // at which the balancing stops
+  std::size_t maximum_balancing_iterations = internal::maximum_balancing_iterations;
 };
 
 // The heat regions and the kernel values on them (build_heat_regions()), into the
