@@ -318,6 +318,23 @@ if python3 -c '
 import json; d = json.load(open("hippo.json")); f = d["features"]
 assert d["input_kind"] == "points" and d["points"] == 6104 and set(f) == {"0", "10"}, d
 assert all(len(f[k]["convex"]) > 0 and len(f[k]["concave"]) > 0 for k in f), f'; then pass; else fail "features on points: JSON"; fi
+# the PLY points: the labels are the JSON's, the positions the file's, the normals unit
+if python3 -c '
+import json, math, struct
+f = json.load(open("hippo.json"))["features"]["0"]
+data = open("hippo_k0.ply", "rb").read()
+end = data.index(b"end_header\n") + len(b"end_header\n")
+header = data[:end].decode().split("\n")
+names = [l.split()[2] for l in header if l.startswith("property double")]
+assert names == ["x", "y", "z", "feature", "field", "nx", "ny", "nz"], names
+assert "element vertex 6104" in header and "element face 0" in header, header
+size = 8 * len(names) + 4
+rows = [struct.unpack_from("<%dd" % len(names), data, end + i * size) for i in range(6104)]
+assert [i for i, r in enumerate(rows) if r[3] == 1] == f["convex"] and [i for i, r in enumerate(rows) if r[3] == -1] == f["concave"]
+assert all(abs(math.hypot(r[5], r[6], r[7]) - 1) < 1e-12 for r in rows)
+first = open("'"$points"'/hippo1.ply", "rb").read()
+start = first.index(b"end_header\n") + len(b"end_header\n")
+assert struct.unpack_from("<3d", first, start) == rows[0][:3]'; then pass; else fail "features on points: PLY output"; fi
 for c in hks decompose enhance denoise; do
   expect 1 "kitten.xyz: this file holds points and no faces: '$c' needs a triangle mesh \(ncc, diffuse and features" -- \
     "$tool" "$c" "$points/kitten.xyz" -o refused.off
