@@ -72,16 +72,12 @@ inline std::unique_ptr<Point_set> make_point_set(py::handle P_object, py::handle
 }
 
 // The package's advice in its messages on point sets, in the module's terms.
-inline std::string in_module_terms(std::string message)
+// (in_front_end_terms() is the tool's, from cli_errors.h, which mesh_repair.h includes)
+inline std::string in_module_terms(const std::string& message)
 {
-  const std::pair<std::string, std::string> terms[] = {
-      {"with the normal_map named parameter", "as N (n x 3)"},
-      {"or a normal_map, may help", "or normals N, may help"},
-      {"or more neighbours", "or more neighbours (neighbors=)"}};
-  for(const auto& term : terms)
-    for(std::size_t at = message.find(term.first); at != std::string::npos; at = message.find(term.first, at + 1))
-      message.replace(at, term.first.size(), term.second);
-  return message;
+  return heat_diffusion_cli::in_front_end_terms(message, {{"with the normal_map named parameter", "as N (n x 3)"},
+                                                          {"or a normal_map, may help", "or normals N, may help"},
+                                                          {"or more neighbours", "or more neighbours (neighbors=)"}});
 }
 
 // neighbors (None: the package's defaults::number_of_neighbors) and neighbor_radius

@@ -10,6 +10,8 @@
 #include <new>
 #include <stdexcept>
 #include <string>
+#include <utility>
+#include <vector>
 
 namespace heat_diffusion_cli {
 
@@ -26,6 +28,19 @@ struct Input_error : std::runtime_error
 {
   using std::runtime_error::runtime_error;
 };
+
+// `message` with each phrase of `terms` replaced by its other: the package's advice,
+// which names its own named parameters, in the words of a front end (the tool's options,
+// the Python module's arguments).
+inline std::string in_front_end_terms(std::string message,
+                                      const std::vector<std::pair<std::string, std::string> >& terms)
+{
+  for(const auto& term : terms)
+    for(std::size_t at = message.find(term.first); at != std::string::npos;
+        at = message.find(term.first, at + term.second.size()))
+      message.replace(at, term.first.size(), term.second);
+  return message;
+}
 
 // Runs a call into the package for the input file `input`: every exception it
 // throws (invalid input, a failed eigen solve or factorisation, a logic error, out of

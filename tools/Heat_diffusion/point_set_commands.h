@@ -35,17 +35,14 @@ typedef HD::Point_set_anisotropic_heat_diffusion<Point_set> Point_set_diffusion;
 typedef std::vector<std::pair<std::string, std::vector<double> > > Fields;
 
 // The library's advice in its messages on point sets, in the tool's terms.
-inline std::string in_tool_terms(std::string message)
+inline std::string in_tool_terms(const std::string& message)
 {
-  const std::pair<std::string, std::string> terms[] = {
-      {"with the normal_map named parameter", "in the file (PWN, XYZ with 6 numbers a line, or PLY with nx, ny, nz)"},
-      {"or a normal_map, may help", "or normals in the file, may help"},
-      {"or more neighbours", "or more neighbours (--neighbors)"},
-      {"within the neighbor_radius", "within --neighbor-radius"}};
-  for(const auto& term : terms)
-    for(std::size_t at = message.find(term.first); at != std::string::npos; at = message.find(term.first, at + 1))
-      message.replace(at, term.first.size(), term.second);
-  return message;
+  return in_front_end_terms(
+      message,
+      {{"with the normal_map named parameter", "in the file (PWN, XYZ with 6 numbers a line, or PLY with nx, ny, nz)"},
+       {"or a normal_map, may help", "or normals in the file, may help"},
+       {"or more neighbours", "or more neighbours (--neighbors)"},
+       {"within the neighbor_radius", "within --neighbor-radius"}});
 }
 
 // for_input() for the library's point-set calls, with in_tool_terms().
