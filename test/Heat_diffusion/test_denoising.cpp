@@ -20,6 +20,7 @@
 #include <CGAL/Random.h>
 #include <CGAL/Simple_cartesian.h>
 #include <CGAL/Surface_mesh.h>
+#include <CGAL/boost/graph/generators.h>
 
 #include <CGAL/Heat_diffusion/denoising.h>
 #include <CGAL/Polygon_mesh_processing/compute_normal.h>
@@ -31,8 +32,10 @@
 #include "test_support.h"
 #include "baselines/bilateral_normal_filtering.h"
 #include "baselines/guided_normal_filtering.h"
+#include "baselines/l0_minimization.h"
 
 #include <algorithm>
+#include <array>
 #include <cmath>
 #include <functional>
 #include <iostream>
@@ -252,6 +255,42 @@ void test_no_sliding()
     CHECK_MESSAGE(rms < 0.9 * noisy_rms, c.file << ", noise " << c.noise << ": RMS " << rms << " vs noisy " << noisy_rms);
     CHECK_MESSAGE(mad <= c.mad_bound, c.file << ", noise " << c.noise << ": MAD " << mad << " vs " << c.mad_bound);
   }
+}
+
+// The L0 minimization baseline of benchmark_denoising (He and Schaefer 2013): its
+// edge-based operator sums to 0 and vanishes on four coplanar points, whatever their
+// positions in the plane, but not on a folded edge; a regular triangulated grid (flat,
+// every edge's two triangles a parallelogram, so that the regularisation vanishes too) is
+// the optimisation's fixed point.
+void test_l0_baseline()
+{
+  namespace TB = test_support::baselines;
+  CGAL::Random random(3);
+  for(int trial = 0; trial < 20; ++trial)
+  {
+    const Eigen::Vector3d u = Eigen::Vector3d::Random().normalized();
+    const Eigen::Vector3d v = u.cross(Eigen::Vector3d::Random()).normalized();
+    auto in_plane = [&](double a, double b) { return Eigen::Vector3d(a * u + b * v); };
+    std::array<Eigen::Vector3d, 4> p = {in_plane(0, 0), in_plane(random.get_double(-0.5, 1.5), random.get_double(0.2, 1)),
+                                        in_plane(1, 0), in_plane(random.get_double(-0.5, 1.5), -random.get_double(0.2, 1))};
+    std::array<double, 4> c = TB::l0_edge_coefficients(p);
+    const Eigen::Vector3d flat = c[0] * p[0] + c[1] * p[1] + c[2] * p[2] + c[3] * p[3];
+    CHECK(std::abs(c[0] + c[1] + c[2] + c[3]) < 1e-12);
+    CHECK_MESSAGE(flat.norm() < 1e-12, "L0 operator on coplanar points: " << flat.norm());
+    p[1] += 0.3 * u.cross(v);
+    c = TB::l0_edge_coefficients(p);
+    const Eigen::Vector3d folded = c[0] * p[0] + c[1] * p[1] + c[2] * p[2] + c[3] * p[3];
+    CHECK_MESSAGE(folded.norm() > 0.05, "L0 operator on a folded edge: " << folded.norm());
+  }
+  Mesh grid;
+  CGAL::make_grid(8, 8, grid, true);
+  TB::Face_mesh fm = TB::make_face_mesh(grid);
+  const std::vector<Eigen::Vector3d> before = fm.points;
+  CHECK(TB::l0_minimization(fm) == 40);  // beta from 1e-3 by sqrt(2) to 1e3
+  double moved = 0;
+  for(std::size_t i = 0; i < before.size(); ++i)
+    moved = (std::max)(moved, (fm.points[i] - before[i]).norm());
+  CHECK_MESSAGE(moved < 1e-9, "L0 minimization moved a flat regular grid by " << moved);
 }
 
 // Impulsive noise: a tenth or a fifth of the vertices moved along their normals by
@@ -1185,6 +1224,7 @@ void run()
   test_random_direction_noise();
   test_impulsive_noise();
   test_no_sliding();
+  test_l0_baseline();
   test_weak_noise_on_cad();
   test_clean_meshes();
   test_no_collapse();
