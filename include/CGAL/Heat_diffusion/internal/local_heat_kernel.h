@@ -86,8 +86,8 @@ enum class Local_kernel_mass { consistent, lumped };
 // Clusters. The sources are partitioned into compact clusters of about
 // patch_rule_for(tolerance).cluster_size vertices (clustered_order()); one patch, the
 // union of the balls of its sources, serves the whole cluster: one ordering, one
-// symbolic analysis and one numeric factorisation per pole per cluster, and the cluster's columns solved together as a block (contiguous rows,
-// vectorised). A workspace keeps the last cluster's columns, so the sources should
+// symbolic analysis and one numeric factorisation per pole per cluster, and the
+// cluster's columns solved together as a block (contiguous rows, vectorised). A workspace keeps the last cluster's columns, so the sources should
 // come cluster after cluster (source_order()). A column depends only on its
 // cluster, never on the order of the calls or on the thread: sequential and parallel
 // runs give identical results.
@@ -242,9 +242,9 @@ public:
   }
 
   // The patch rule at `tolerance`, with the approximation of exponential_for(): where
-  // the patches' savings and the columns computed again balance best, measured by
-  // benchmark_local_kernel (armadillo subdivided once and twice, t = 0.5 to 4, sigma 0.1,
-  // in CPU time). With two poles (the default tolerance) the radius factor 2.4 and
+  // the patches' savings and the columns computed again balance best, measured in the
+  // single-thread CPU time of building A_t (armadillo subdivided once, t = 0.5 to 4,
+  // sigma 0.1; the user manual has the figures). With two poles (the default tolerance) the radius factor 2.4 and
   // clusters of 128; with three (tolerances below 5e-4) 2.6 and 96, the package's
   // earlier rule, kept so that local_kernel_tolerance(1e-4) computes what it did. (At
   // the default tolerance the radius is the reach of B^-1 e_j below t = 0.46.)
