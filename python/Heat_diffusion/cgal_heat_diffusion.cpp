@@ -466,6 +466,7 @@ struct Diffusion_options
   std::optional<double> sigma;
   std::optional<double> time;
   std::optional<HD::Heat_kernel_method> method;
+  std::optional<double> kernel_tolerance;  // local_kernel_tolerance, checked by the package
   std::optional<long long> eigenpairs;  // checked by the package (number_of_eigenpairs must be positive)
   std::optional<long long> coarse;      // the package checks it; a negative one is refused below
   std::optional<bool> scale_invariant;
@@ -578,7 +579,8 @@ std::optional<long long> optional_whole_number(const py::object& value, const st
 
 Diffusion_options diffusion_options(const std::string& function, const py::object& sigma, const py::object& time,
                                     const py::object& kernel, const py::object& m, const py::object& coarse,
-                                    const py::object& scale_invariant_object)
+                                    const py::object& scale_invariant_object,
+                                    const py::object& kernel_tolerance = py::none())
 {
   Diffusion_options o;
   o.sigma = optional_number(sigma, function, "sigma");
@@ -619,6 +621,10 @@ Diffusion_options diffusion_options(const std::string& function, const py::objec
   if(o.method == HD::Heat_kernel_method::local && eigenpairs_requested)
     invalid(function, "m, coarse and scale_invariant concern the eigenpairs of the spectral kernel; "
                       "kernel='local' computes none");
+  // and the spectral kernel has no tolerance (as the tool's --kernel-tolerance)
+  o.kernel_tolerance = optional_number(kernel_tolerance, function, "kernel_tolerance");
+  if(o.kernel_tolerance && (o.method == HD::Heat_kernel_method::spectral || eigenpairs_requested))
+    invalid(function, "kernel_tolerance concerns the local kernel; the spectral kernel has none");
   return o;
 }
 
@@ -627,6 +633,7 @@ auto diffusion_parameters(const Diffusion_options& o, std::function<bool(double)
 {
   return HD::parameters::combine(
       HD::parameters::sigma(o.sigma), HD::parameters::time(o.time), HD::parameters::kernel_method(o.method),
+      HD::parameters::local_kernel_tolerance(o.kernel_tolerance),
       HD::parameters::number_of_eigenpairs(o.eigenpairs), HD::parameters::scale_invariant_kernel(o.scale_invariant),
       HD::parameters::coarse_vertex_count(o.coarse), HD::parameters::operator_normalization(o.normalization),
       HD::parameters::progress_callback(std::move(progress)));
@@ -747,12 +754,12 @@ class Heat_diffusion
 public:
   // `function` names the caller in the binding's errors: the class, or the free
   // function that builds the diffusion.
-  Heat_diffusion(py::object V, py::object F, py::object sigma, py::object time, py::object kernel, py::object m,
-                 py::object coarse, py::object scale_invariant, py::object normalization, py::object progress,
-                 const std::string& function = "HeatDiffusion")
+  Heat_diffusion(py::object V, py::object F, py::object sigma, py::object time, py::object kernel,
+                 py::object kernel_tolerance, py::object m, py::object coarse, py::object scale_invariant,
+                 py::object normalization, py::object progress, const std::string& function = "HeatDiffusion")
     : mesh_(make_mesh(V, F, function))
   {
-    Diffusion_options o = diffusion_options(function, sigma, time, kernel, m, coarse, scale_invariant);
+    Diffusion_options o = diffusion_options(function, sigma, time, kernel, m, coarse, scale_invariant, kernel_tolerance);
     // operator_normalization: 'balanced' (the default, doubly stochastic) or 'columns' (the paper's)
     if(!normalization.is_none())
     {
@@ -950,22 +957,25 @@ py::array_t<double> normal_controlled_coordinates(py::object V, py::object F)
 
 py::list multiscale_features(py::object V, py::object F, py::object field, py::object steps,
                              py::object feature_threshold, py::object sigma, py::object time, py::object kernel,
-                             py::object m, py::object coarse, py::object scale_invariant, py::object progress)
+                             py::object kernel_tolerance, py::object m, py::object coarse, py::object scale_invariant,
+                             py::object progress)
 {
   const std::string function = "multiscale_features";
   bool single = false;
   step_list(steps, function, single, feature_scales());  // before the diffusion is built
-  const Heat_diffusion diffusion(V, F, sigma, time, kernel, m, coarse, scale_invariant, py::none(), progress, function);
+  const Heat_diffusion diffusion(V, F, sigma, time, kernel, kernel_tolerance, m, coarse, scale_invariant, py::none(),
+                                 progress, function);
   return diffusion.features_as(function, field, steps, feature_threshold);
 }
 
 py::tuple decompose(py::object V, py::object F, py::object field, py::object levels, py::object steps_per_level,
-                    py::object sigma, py::object time, py::object kernel, py::object m, py::object coarse,
-                    py::object scale_invariant, py::object progress)
+                    py::object sigma, py::object time, py::object kernel, py::object kernel_tolerance, py::object m,
+                    py::object coarse, py::object scale_invariant, py::object progress)
 {
   const std::string function = "decompose";
   checked_levels(levels, function);  // before the diffusion is built
-  const Heat_diffusion diffusion(V, F, sigma, time, kernel, m, coarse, scale_invariant, py::none(), progress, function);
+  const Heat_diffusion diffusion(V, F, sigma, time, kernel, kernel_tolerance, m, coarse, scale_invariant, py::none(),
+                                 progress, function);
   return diffusion.decompose_as(function, field, levels, steps_per_level);
 }
 
@@ -1007,11 +1017,13 @@ py::array_t<double> synthesize(py::object bands_object, py::object residual_obje
 
 py::array_t<double> filter_shape(py::object V, py::object F, py::object weights_object, py::object steps_object,
                                  py::object anchor_object, py::object sigma, py::object time, py::object kernel,
-                                 py::object m, py::object coarse, py::object scale_invariant, py::object progress)
+                                 py::object kernel_tolerance, py::object m, py::object coarse,
+                                 py::object scale_invariant, py::object progress)
 {
   const std::string function = "filter_shape";
   auto mesh = make_mesh(V, F, function);
-  const Diffusion_options o = diffusion_options(function, sigma, time, kernel, m, coarse, scale_invariant);
+  const Diffusion_options o =
+      diffusion_options(function, sigma, time, kernel, m, coarse, scale_invariant, kernel_tolerance);
   const std::vector<double> weights = number_list(weights_object, function, "weights");
   if(weights.empty() || weights.size() > 1000)  // as the tool's --weights: one band per weight
     invalid(function, "weights must have 1 to 1000 values (one per detail band), not " +
@@ -1200,7 +1212,9 @@ std::string diffusion_arguments_doc()
          "sigma: edge-weight width of eq. 10 (default " + number_text(D::sigma) + "; small keeps features);\n"
          "time: t of one step, on the mesh rescaled to area = vertex count (default " + number_text(D::time) + ");\n"
          "kernel: 'local', 'spectral' or None (Heat_kernel_method::automatic: local unless m, coarse or\n"
-         "scale_invariant asks for eigenpairs); m: number_of_eigenpairs of the spectral kernel (default " +
+         "scale_invariant asks for eigenpairs); kernel_tolerance: local_kernel_tolerance, the local kernel's\n"
+         "accuracy (default " + number_text(D::local_kernel_tolerance) + "; 1e-4 was the earlier default);\n"
+         "m: number_of_eigenpairs of the spectral kernel (default " +
          std::to_string(D::number_of_eigenpairs) + ");\n"
          "coarse: coarse_vertex_count of its eigen solve (None: automatic, 0: none); scale_invariant: the\n"
          "kernel of eq. 14 (spectral); normalization (HeatDiffusion): 'balanced' (the default: A_t doubly\n"
@@ -1241,9 +1255,9 @@ PYBIND11_MODULE(cgal_heat_diffusion, module)
                              ("The operator A_t of the mesh (V, F), built once, applied many times.\n" + diffusion_doc)
                                  .c_str())
       .def(py::init<py::object, py::object, py::object, py::object, py::object, py::object, py::object, py::object,
-                    py::object, py::object>(),
+                    py::object, py::object, py::object>(),
            py::arg("V"), py::arg("F"), py::kw_only(), py::arg("sigma") = py::none(), py::arg("time") = py::none(),
-           py::arg("kernel") = py::none(), py::arg("m") = py::none(), py::arg("coarse") = py::none(),
+           py::arg("kernel") = py::none(), py::arg("kernel_tolerance") = py::none(), py::arg("m") = py::none(), py::arg("coarse") = py::none(),
            py::arg("scale_invariant") = py::none(), py::arg("normalization") = py::none(),
            py::arg("progress") = py::none())
       .def("diffuse", &Heat_diffusion::diffuse, py::arg("field"), py::arg("steps") = py::none(),
@@ -1280,6 +1294,7 @@ PYBIND11_MODULE(cgal_heat_diffusion, module)
   module.def("multiscale_features", &multiscale_features, py::arg("V"), py::arg("F"), py::arg("field") = py::none(),
              py::arg("steps") = py::none(), py::kw_only(), py::arg("feature_threshold") = py::none(),
              py::arg("sigma") = py::none(), py::arg("time") = py::none(), py::arg("kernel") = py::none(),
+             py::arg("kernel_tolerance") = py::none(),
              py::arg("m") = py::none(), py::arg("coarse") = py::none(), py::arg("scale_invariant") = py::none(),
              py::arg("progress") = py::none(),
              ("Features of the diffused field (default: the NS), as HeatDiffusion.features.\n" + diffusion_doc)
@@ -1287,6 +1302,7 @@ PYBIND11_MODULE(cgal_heat_diffusion, module)
   module.def("decompose", &decompose, py::arg("V"), py::arg("F"), py::arg("field") = py::none(),
              py::arg("levels") = py::none(), py::kw_only(), py::arg("steps_per_level") = py::none(),
              py::arg("sigma") = py::none(), py::arg("time") = py::none(), py::arg("kernel") = py::none(),
+             py::arg("kernel_tolerance") = py::none(),
              py::arg("m") = py::none(), py::arg("coarse") = py::none(), py::arg("scale_invariant") = py::none(),
              py::arg("progress") = py::none(),
              ("Detail bands (levels, n) and residual (n,) of the field (default: the NS), as\n"
@@ -1297,6 +1313,7 @@ PYBIND11_MODULE(cgal_heat_diffusion, module)
   module.def("filter_shape", &filter_shape, py::arg("V"), py::arg("F"), py::arg("weights"), py::kw_only(),
              py::arg("steps_per_level") = py::none(), py::arg("anchor_weight") = py::none(),
              py::arg("sigma") = py::none(), py::arg("time") = py::none(), py::arg("kernel") = py::none(),
+             py::arg("kernel_tolerance") = py::none(),
              py::arg("m") = py::none(), py::arg("coarse") = py::none(), py::arg("scale_invariant") = py::none(),
              py::arg("progress") = py::none(),
              ("New vertex positions (n, 3): the NS bands reweighted, the shape reconstructed; steps_per_level\n"
