@@ -23,5 +23,6 @@
 #include <CGAL/Heat_diffusion/point_set_normal_controlled_coordinates.h>
 #include <CGAL/Heat_diffusion/point_set_anisotropic_heat_diffusion.h>
 #include <CGAL/Heat_diffusion/point_set_multiscale_features.h>
+#include <CGAL/Heat_diffusion/point_set_decomposition.h>
 
 #endif // CGAL_HEAT_DIFFUSION_H

@@ -209,22 +209,7 @@ public:
   const internal::Ncc_data& data() const { return data_; }
 
   // N in the normalised frame of indexed_mesh().
-  Sparse_matrix internal_operator_matrix() const
-  {
-    const std::size_t n = mesh_.number_of_vertices();
-    std::vector<Eigen::Triplet<double> > entries;
-    entries.reserve(mesh_.fan.size() + n);
-    for(std::size_t i = 0; i < n; ++i)
-    {
-      const double inverse_root_area = 1. / std::sqrt(data_.areas[i]);
-      entries.emplace_back(int(i), int(i), inverse_root_area);
-      for(std::size_t k = mesh_.fan_begin[i]; k < mesh_.fan_begin[i + 1]; ++k)
-        entries.emplace_back(int(i), int(mesh_.fan[k]), -data_.weights[k] * inverse_root_area);
-    }
-    Sparse_matrix N(static_cast<Eigen::Index>(n), static_cast<Eigen::Index>(n));
-    N.setFromTriplets(entries.begin(), entries.end());
-    return N;
-  }
+  Sparse_matrix internal_operator_matrix() const { return internal::ncc_operator_matrix(mesh_, data_); }
   /// \endcond
 
 private:

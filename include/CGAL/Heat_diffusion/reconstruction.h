@@ -7,12 +7,12 @@
 #define CGAL_HEAT_DIFFUSION_RECONSTRUCTION_H
 
 #include <CGAL/Heat_diffusion/internal/errors.h>
-#include <CGAL/Heat_diffusion/internal/sparse_cholesky.h>
+#include <CGAL/Heat_diffusion/internal/ncc_reconstruction.h>
 #include <CGAL/Heat_diffusion/internal/vertex_fields.h>
 #include <CGAL/Heat_diffusion/internal/vertex_normals_from_parameters.h>
 #include <CGAL/Heat_diffusion/normal_controlled_coordinates.h>
 
-#include <Eigen/Sparse>
+#include <Eigen/Core>
 
 #include <cmath>
 
@@ -127,29 +127,8 @@ void reconstruct_from_normal_signature(TriangleMesh& tm, const VertexNSMap& ns_m
   const Eigen::VectorXd signature = internal::read_vertex_field(
       tm, n, ns_map, [&ncc](auto v) { return ncc.vertex_index(v); }, "reconstruct_from_normal_signature",
       "normal signature");
-  const Eigen::Index size = static_cast<Eigen::Index>(n);
-  Eigen::MatrixXd target(size, 3), anchors(size, 3);
-  Eigen::VectorXd squared_anchor_weights(size);
-  for(std::size_t i = 0; i < n; ++i)
-  {
-    target.row(Eigen::Index(i)) =
-        (signature[Eigen::Index(i)] * target_normals[i] + ncc.data().tangential_part[i]).transpose();
-    anchors.row(Eigen::Index(i)) = mesh.points[i].transpose();
-    squared_anchor_weights[Eigen::Index(i)] = anchor_weight * anchor_weight / ncc.data().areas[i];
-  }
-
-  const Eigen::SparseMatrix<double> N = ncc.internal_operator_matrix();
-  Eigen::SparseMatrix<double> anchor_matrix(N.rows(), N.cols());
-  anchor_matrix.setIdentity();
-  anchor_matrix.diagonal() = squared_anchor_weights;
-  const Eigen::SparseMatrix<double> normal_matrix = Eigen::SparseMatrix<double>(N.transpose() * N) + anchor_matrix;
-  internal::Sparse_cholesky cholesky;
-  internal::factorize_or_throw(cholesky, normal_matrix, "the reconstruction system N^T N + W^2");
-  const Eigen::MatrixXd rhs = N.transpose() * target + squared_anchor_weights.asDiagonal() * anchors;
-  const Eigen::MatrixXd solution = cholesky.solve(rhs);
-  if(cholesky.info() != Eigen::Success || !solution.allFinite())
-    throw std::runtime_error("CGAL::Heat_diffusion: reconstruct_from_normal_signature: the solve failed");
-
+  const Eigen::MatrixXd solution = internal::reconstruct_positions(mesh, ncc.data(), signature, target_normals,
+                                                                   anchor_weight, "reconstruct_from_normal_signature");
   for(auto v : vertices(tm))
   {
     const Eigen::Vector3d x = mesh.to_user_frame(solution.row(Eigen::Index(ncc.vertex_index(v))).transpose());

@@ -9,6 +9,7 @@
 
 #include <Eigen/Core>
 #include <Eigen/Geometry>
+#include <Eigen/Sparse>
 
 #include <array>
 #include <cmath>
@@ -154,6 +155,26 @@ inline Ncc_data compute_ncc_data(const Indexed_mesh& mesh, std::vector<Eigen::Ve
 inline Ncc_data compute_ncc_data(const Indexed_mesh& mesh, std::vector<Eigen::Vector3d> normals)
 {
   return compute_ncc_data(mesh, std::move(normals), mixed_voronoi_areas(mesh));
+}
+
+// N in the normalised frame of `mesh`: N_ii = a_i^(-1/2), N_ij = -omega_ij a_i^(-1/2)
+// over mesh.fan (a point set's weights are 0 at the graph neighbours outside the point's
+// own fan), so that N V = s n + tangential part, row by row.
+inline Eigen::SparseMatrix<double> ncc_operator_matrix(const Indexed_mesh& mesh, const Ncc_data& data)
+{
+  const std::size_t n = mesh.number_of_vertices();
+  std::vector<Eigen::Triplet<double> > entries;
+  entries.reserve(mesh.fan.size() + n);
+  for(std::size_t i = 0; i < n; ++i)
+  {
+    const double inverse_root_area = 1. / std::sqrt(data.areas[i]);
+    entries.emplace_back(int(i), int(i), inverse_root_area);
+    for(std::size_t k = mesh.fan_begin[i]; k < mesh.fan_begin[i + 1]; ++k)
+      entries.emplace_back(int(i), int(mesh.fan[k]), -data.weights[k] * inverse_root_area);
+  }
+  Eigen::SparseMatrix<double> N(static_cast<Eigen::Index>(n), static_cast<Eigen::Index>(n));
+  N.setFromTriplets(entries.begin(), entries.end());
+  return N;
 }
 
 } // namespace internal
