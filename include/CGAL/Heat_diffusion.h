@@ -24,5 +24,6 @@
 #include <CGAL/Heat_diffusion/point_set_anisotropic_heat_diffusion.h>
 #include <CGAL/Heat_diffusion/point_set_multiscale_features.h>
 #include <CGAL/Heat_diffusion/point_set_decomposition.h>
+#include <CGAL/Heat_diffusion/point_set_denoising.h>
 
 #endif // CGAL_HEAT_DIFFUSION_H

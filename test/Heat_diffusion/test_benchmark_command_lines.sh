@@ -12,7 +12,7 @@ source "$(dirname "$0")/command_line_checks.sh"
 rm -rf "$work" && mkdir -p "$work" || exit 1
 
 for b in benchmark_heat_diffusion benchmark_denoising benchmark_scale_curve benchmark_local_kernel \
-         benchmark_features benchmark_mesh_input benchmark_kernel_accuracy; do
+         benchmark_features benchmark_mesh_input benchmark_kernel_accuracy benchmark_point_set_denoising; do
   expect 0 "^usage: $b" -- "$bin/$b" --help
   expect 0 "^usage: $b" -- "$bin/$b" -h
   expect 2 "unknown option --bogus" -- "$bin/$b" --bogus
@@ -37,6 +37,11 @@ expect 2 "--noise must be a number > 0 and <= 10, not 'abc'" -- "$bin/benchmark_
 expect 2 "--noise must be a number > 0" -- "$bin/benchmark_denoising" --noise 0.3 --noise -0.1
 expect 2 "--half takes tune or check, not 'both'" -- "$bin/benchmark_denoising" --half both
 expect 2 "--gaussian and --impulsive exclude each other" -- "$bin/benchmark_denoising" --gaussian --impulsive
+expect 2 "--points must be a whole number from 100" -- "$bin/benchmark_point_set_denoising" --points 10
+expect 2 "--noise must be a number > 0 and <= 10, not '20'" -- "$bin/benchmark_point_set_denoising" --noise 0.5,20
+expect 2 '--meshes needs at least one mesh' -- "$bin/benchmark_point_set_denoising" --meshes ,
+# the cheapest run that goes through every method and the summary (a few seconds)
+expect 0 "^Means over 1 rows" -- "$bin/benchmark_point_set_denoising" --meshes fandisk.off --points 2000 --noise 1
 # benchmark_mesh_input checks its TOOL and DIR before it writes and reads its meshes
 expect 2 "TOOL '$work/no_such_tool' is not an executable file" -- \
   "$bin/benchmark_mesh_input" "$work/no_such_tool" --dir "$work" --levels 0

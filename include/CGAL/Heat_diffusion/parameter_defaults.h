@@ -89,6 +89,16 @@ inline constexpr double time = 1.;
 inline constexpr double anchor_weight = 0.7;
 } // namespace denoising
 
+/// The defaults of `denoise_point_set()`, measured with `benchmark_point_set_denoising`.
+namespace point_set_denoising {
+/// `number_of_iterations` (the displacement limit usually stops them first).
+inline constexpr unsigned int iterations = 40;
+/// `number_of_steps`: normal filtering steps per iteration.
+inline constexpr std::size_t number_of_steps = 1;
+/// `displacement_limit`, in multiples of the estimated noise level.
+inline constexpr double displacement_limit = 1.;
+} // namespace point_set_denoising
+
 } // namespace defaults
 } // namespace Heat_diffusion
 } // namespace CGAL

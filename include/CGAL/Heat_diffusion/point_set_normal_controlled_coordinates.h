@@ -40,21 +40,27 @@ bool has_own_normals(const CGAL::Point_set_3<Point, Vector>& points)
   return points.has_normal_map();
 }
 
-// The points of the range, its normals if it has some (else empty), and the options of
-// the surface, as Point_set_processing_3 reads its named parameters.
+// The points of a range, its normals if it has some (else empty), and the options of its
+// surface, as Point_set_processing_3 reads its named parameters.
+struct Point_set_input
+{
+  std::vector<Eigen::Vector3d> points, normals;
+  Point_set_surface_options options;
+};
+
 template <typename PointRange, typename NamedParameters>
-Point_set_surface make_point_set_surface(const PointRange& points, unsigned int k, const NamedParameters& np)
+Point_set_input read_point_set_input(const PointRange& points, unsigned int k, const NamedParameters& np)
 {
   typedef CGAL::Point_set_processing_3_np_helper<PointRange, NamedParameters> NP_helper;
   const auto point_map = NP_helper::get_const_point_map(points, np);
   const bool given_normals =
       !parameters::is_default_parameter<NamedParameters, CGAL::internal_np::normal_t>::value ||
       has_own_normals(points);
-  std::vector<Eigen::Vector3d> p, normals;
+  Point_set_input input;
   for(const auto& item : points)
   {
     const auto& x = get(point_map, item);
-    p.emplace_back(CGAL::to_double(x.x()), CGAL::to_double(x.y()), CGAL::to_double(x.z()));
+    input.points.emplace_back(CGAL::to_double(x.x()), CGAL::to_double(x.y()), CGAL::to_double(x.z()));
   }
   if(given_normals)
   {
@@ -62,14 +68,20 @@ Point_set_surface make_point_set_surface(const PointRange& points, unsigned int 
     for(const auto& item : points)
     {
       const auto& v = get(normal_map, item);
-      normals.emplace_back(CGAL::to_double(v.x()), CGAL::to_double(v.y()), CGAL::to_double(v.z()));
+      input.normals.emplace_back(CGAL::to_double(v.x()), CGAL::to_double(v.y()), CGAL::to_double(v.z()));
     }
   }
-  Point_set_surface_options options;
-  options.k = k;
-  options.neighbor_radius = CGAL::to_double(
+  input.options.k = k;
+  input.options.neighbor_radius = CGAL::to_double(
       parameters::choose_parameter(parameters::get_parameter(np, CGAL::internal_np::neighbor_radius), 0.));
-  return make_point_set_surface(std::move(p), std::move(normals), options);
+  return input;
+}
+
+template <typename PointRange, typename NamedParameters>
+Point_set_surface make_point_set_surface(const PointRange& points, unsigned int k, const NamedParameters& np)
+{
+  Point_set_input input = read_point_set_input(points, k, np);
+  return make_point_set_surface(std::move(input.points), std::move(input.normals), input.options);
 }
 
 } // namespace internal

@@ -267,26 +267,29 @@ inline bool keep_resolved_triangles(const Indexed_mesh& mesh, std::size_t i, std
   return true;
 }
 
-// Builds the surface of `points` (user coordinates): neighbours, normals (`user_normals`
-// if not empty, in user orientation, else estimated and oriented), fans, NCC and the
-// graph. Throws std::invalid_argument, naming the point, where the package cannot
-// process the input: a non-finite coordinate or normal, a null normal, fewer than k + 1
-// points, coinciding points, a neighbourhood that is collinear on its tangent plane, a
-// normal that cannot be oriented.
-//
-// The NCC's normal of a point is the user's, or else the area-weighted normal of its
-// own fan (MWAAT, the mesh's default rule), oriented by the estimated normal: where the
-// fan is the mesh's one-ring, the point's NS is then the vertex's.
-inline Point_set_surface make_point_set_surface(std::vector<Eigen::Vector3d> user_points,
-                                                std::vector<Eigen::Vector3d> user_normals,
-                                                const Point_set_surface_options& options)
+// The points in the normalised frame of Indexed_mesh, their neighbours and unit normals:
+// what every point-set algorithm of the package starts from.
+struct Point_set_neighbourhoods
+{
+  std::vector<std::vector<std::size_t> > neighbours;  // per point, nearest first
+  std::vector<Eigen::Vector3d> normals;               // the user's (normalised) or estimated and oriented
+};
+
+// Checks the input, puts the points (user coordinates) in the normalised frame of `mesh`
+// and finds their neighbours and normals (`user_normals` if not empty, in user
+// orientation, else estimated and oriented). Throws std::invalid_argument, naming the
+// point, where the package cannot process the input: a non-finite coordinate or normal,
+// a null normal, fewer than k + 1 points, coinciding points, a normal that cannot be
+// estimated or oriented. An empty input gives empty neighbourhoods.
+inline Point_set_neighbourhoods prepare_point_set(std::vector<Eigen::Vector3d> user_points,
+                                                  std::vector<Eigen::Vector3d> user_normals,
+                                                  const Point_set_surface_options& options, Indexed_mesh& mesh)
 {
   const std::size_t n = user_points.size();
   const bool given_normals = !user_normals.empty();
-  Point_set_surface surface;
-  Indexed_mesh& mesh = surface.mesh;
+  Point_set_neighbourhoods result;
   if(n == 0)
-    return surface;
+    return result;
   if(!(options.neighbor_radius >= 0) || !std::isfinite(options.neighbor_radius))
     throw_invalid_input("neighbor_radius must be positive and finite (or 0: the k nearest neighbours)");
   if(options.neighbor_radius == 0 && options.k < 2)
@@ -323,20 +326,18 @@ inline Point_set_surface make_point_set_surface(std::vector<Eigen::Vector3d> use
   // (a radius in user units is scaled like the points; a power of two, exact)
   const double radius = std::ldexp(options.neighbor_radius, mesh.scale_exponent);
 
-  const std::vector<std::vector<std::size_t> > neighbours =
-      find_neighbours(p, options.k, radius, 2 * (0.5 * hi - 0.5 * lo).maxCoeff());
+  result.neighbours = find_neighbours(p, options.k, radius, 2 * (0.5 * hi - 0.5 * lo).maxCoeff());
   for(std::size_t i = 0; i < n; ++i)
-    if(neighbours[i].size() < 2)  // (only with a radius: else there are k >= 2)
+    if(result.neighbours[i].size() < 2)  // (only with a radius: else there are k >= 2)
     {
       std::ostringstream os;
-      os << "has " << neighbours[i].size() << " neighbour(s) within the neighbor_radius; a fan needs 2";
+      os << "has " << result.neighbours[i].size() << " neighbour(s) within the neighbor_radius; a fan needs 2";
       throw_point_error(i, os.str());
     }
-  std::vector<Eigen::Vector3d> normals;
   if(given_normals)
   {
-    normals = std::move(user_normals);
-    for(Eigen::Vector3d& v : normals)
+    result.normals = std::move(user_normals);
+    for(Eigen::Vector3d& v : result.normals)
       v.stableNormalize();
   }
   else
@@ -346,11 +347,38 @@ inline Point_set_surface make_point_set_surface(std::vector<Eigen::Vector3d> use
     if(k == 0)
     {
       k = n;
-      for(const auto& list : neighbours)
+      for(const auto& list : result.neighbours)
         k = (std::min)(k, list.size());
     }
-    normals = estimate_oriented_normals(p, k);
+    result.normals = estimate_oriented_normals(p, k);
   }
+  return result;
+}
+
+// Builds the surface of `points` (user coordinates): neighbours, normals (`user_normals`
+// if not empty, in user orientation, else estimated and oriented), fans, NCC and the
+// graph. Throws std::invalid_argument, naming the point, where the package cannot
+// process the input: prepare_point_set()'s errors, a neighbourhood that is collinear on
+// its tangent plane, a normal that cannot be oriented consistently with the fans.
+//
+// The NCC's normal of a point is the user's, or else the area-weighted normal of its
+// own fan (MWAAT, the mesh's default rule), oriented by the estimated normal: where the
+// fan is the mesh's one-ring, the point's NS is then the vertex's.
+inline Point_set_surface make_point_set_surface(std::vector<Eigen::Vector3d> user_points,
+                                                std::vector<Eigen::Vector3d> user_normals,
+                                                const Point_set_surface_options& options)
+{
+  const std::size_t n = user_points.size();
+  const bool given_normals = !user_normals.empty();
+  Point_set_surface surface;
+  Indexed_mesh& mesh = surface.mesh;
+  if(n == 0)
+    return surface;
+  Point_set_neighbourhoods prepared =
+      prepare_point_set(std::move(user_points), std::move(user_normals), options, mesh);
+  const std::vector<Eigen::Vector3d>& p = mesh.points;
+  const std::vector<std::vector<std::size_t> >& neighbours = prepared.neighbours;
+  std::vector<Eigen::Vector3d>& normals = prepared.normals;
 
   // The fans, the NCC normals and the Voronoi areas, point by point.
   std::vector<std::vector<std::size_t> > fans(n);
