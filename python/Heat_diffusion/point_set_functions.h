@@ -184,8 +184,12 @@ public:
                  const std::string& function = "PointSetHeatDiffusion")
   {
     const Neighbourhood nb = neighbourhood(neighbors, radius, function);
-    // (m, coarse and scale_invariant concern the spectral kernel, which point sets do not have)
+    // (m, coarse and scale_invariant concern the spectral kernel, which the module, as the
+    // tool, does not offer on point sets yet; the C++ class has it)
     Diffusion_options o = diffusion_options(function, sigma, time, kernel, py::none(), py::none(), py::none());
+    if(o.method && *o.method == HD::Heat_kernel_method::spectral)
+      invalid(function, "on a point set the module has the local kernel only (kernel='spectral' is in the C++ "
+                        "library's Point_set_anisotropic_heat_diffusion)");
     if(!normalization.is_none())
     {
       const std::string name = py::isinstance<py::str>(normalization) ? normalization.cast<std::string>() : "";

@@ -374,9 +374,11 @@ void check_bad_input()
     Eigen::VectorXd f = Eigen::VectorXd::Zero(36);
     f[9] = std::numeric_limits<double>::infinity();
     CHECK_THROWS(diffusion.diffuse(f, 1), std::invalid_argument, "point 9 is not finite");
-    CHECK_THROWS(HD::Point_set_anisotropic_heat_diffusion<Points>(
-                     grid, 8, HD::parameters::kernel_method(HD::Heat_kernel_method::spectral)),
-                 std::invalid_argument, "only Heat_kernel_method::local");
+    // (the spectral kernel: number_of_eigenpairs clamped to the 36 points; the rest is in
+    // test_point_set_spectral_kernel)
+    const HD::Point_set_anisotropic_heat_diffusion<Points> spectral(
+        grid, 8, HD::parameters::kernel_method(HD::Heat_kernel_method::spectral));
+    CHECK(spectral.kernel_method() == HD::Heat_kernel_method::spectral && spectral.eigenvalues().size() == 36);
   }
 }
 

@@ -231,24 +231,8 @@ public:
       progress.report(1., "the coarse level");
     }
     number_of_components_ = count_components(mesh);
-    // L is positive semi-definite: the solver's tiny negative values are rounding
-    // noise of the zero eigenvalues. Clamping them keeps every decay rate >= 0, so
-    // exp(-rate t) never overflows (found by fuzzing: a mesh whose eigenvalues were
-    // all noise gave eq. 14 rates of -772 and an infinite kernel).
-    eigenvalues_ = eigenvalues_.cwiseMax(0.);
-
-    // lambda_* of eq. 14: the first eigenvalue clearly above the zero eigenvalues,
-    // which the solver returns as tiny values of either sign: one per connected
-    // component, and one per piece that a small sigma cuts off numerically (weights
-    // across sharp creases underflow).
-    const double tiny = 1e-8 * std::abs(eigenvalues_[eigenvalues_.size() - 1]);
-    first_nonzero_eigenvalue_ = 1.;
-    for(Eigen::Index k = 0; k < eigenvalues_.size(); ++k)
-      if(eigenvalues_[k] > tiny)
-      {
-        first_nonzero_eigenvalue_ = eigenvalues_[k];
-        break;
-      }
+    eigenvalues_ = internal::clamped_eigenvalues(eigenvalues_);
+    first_nonzero_eigenvalue_ = internal::first_nonzero_eigenvalue(eigenvalues_);
   }
 
   /// The NCC the kernel was built from (also gives `vertex_index()`).

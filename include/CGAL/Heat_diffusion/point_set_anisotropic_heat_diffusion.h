@@ -12,6 +12,8 @@
 #include <CGAL/Heat_diffusion/internal/diffusion_construction.h>
 #include <CGAL/Heat_diffusion/internal/diffusion_operator.h>
 #include <CGAL/Heat_diffusion/internal/errors.h>
+#include <CGAL/Heat_diffusion/internal/generalized_eigensolver.h>
+#include <CGAL/Heat_diffusion/internal/kernel_columns.h>
 #include <CGAL/Heat_diffusion/internal/local_heat_kernel.h>
 #include <CGAL/Heat_diffusion/internal/point_set_heat_operators.h>
 #include <CGAL/Heat_diffusion/internal/progress.h>
@@ -22,9 +24,11 @@
 
 #include <Eigen/Sparse>
 
+#include <algorithm>
 #include <cmath>
 #include <memory>
 #include <mutex>
+#include <numeric>
 #include <sstream>
 #include <vector>
 
@@ -41,8 +45,9 @@ namespace Heat_diffusion {
 /// triangles, each weighted by the number of fans that hold it divided by 3 (Sharp and
 /// Crane's point-cloud Laplacian: a triangle all three of its corners see counts once).
 /// Both are symmetric, \f$ L \f$'s rows sum to 0 and \f$ B \f$ is positive definite; the
-/// kernel, the heat regions (grown over the edges of that union), the normalisations
-/// and their guarantees are those of `Anisotropic_heat_diffusion`'s local method.
+/// kernels, the heat regions (grown over the edges of that union), the normalisations
+/// and their guarantees are those of `Anisotropic_heat_diffusion` (the spectral kernel
+/// without a coarse level).
 ///
 /// Fields are given and returned per point, in the order of the range.
 ///
@@ -77,10 +82,17 @@ public:
   ///     \cgalParamDefault{`defaults::sigma`}
   ///   \cgalParamNEnd
   ///   \cgalParamNBegin{kernel_method}
-  ///     \cgalParamDescription{how the heat kernel is evaluated; only the local method is
-  ///       available on point sets}
+  ///     \cgalParamDescription{how the heat kernel is evaluated, as for `Anisotropic_heat_diffusion`:
+  ///       the local kernel, or the paper's truncated spectral kernel from the smallest eigenpairs
+  ///       of the points' \f$ (L, B) \f$, computed on all the points (there is no coarse level
+  ///       on point sets)}
   ///     \cgalParamType{`Heat_kernel_method`}
-  ///     \cgalParamDefault{`Heat_kernel_method::automatic`, which is local here}
+  ///     \cgalParamDefault{`Heat_kernel_method::automatic`: spectral if `number_of_eigenpairs` or
+  ///       `scale_invariant_kernel` is given, else local}
+  ///   \cgalParamNEnd
+  ///   \cgalParamNBegin{number_of_eigenpairs, scale_invariant_kernel}
+  ///     \cgalParamDescription{the spectral kernel's, as for `Edge_weighted_heat_kernel`
+  ///       (`number_of_eigenpairs` is clamped to the number of points)}
   ///   \cgalParamNEnd
   ///   \cgalParamNBegin{local_kernel_tolerance}
   ///     \cgalParamDescription{the local kernel's accuracy (see `Anisotropic_heat_diffusion`)}
@@ -102,11 +114,13 @@ public:
   ///
   /// \throws std::invalid_argument on a point set the package cannot process (see
   ///   `Point_set_normal_controlled_coordinates`), an empty one, or an invalid parameter
-  ///   (the spectral kernel method included).
-  /// \throws std::runtime_error if the construction is cancelled.
+  ///   (`coarse_vertex_count` included: it simplifies a mesh).
+  /// \throws std::runtime_error if the construction is cancelled or the eigen solve fails.
   ///
-  /// Complexity: that of `Point_set_normal_controlled_coordinates`, then linear in the
-  /// number of points for fixed t and k (parallel with TBB).
+  /// Complexity: that of `Point_set_normal_controlled_coordinates`, then, with the local
+  /// kernel, linear in the number of points for fixed t and k (parallel with TBB); with
+  /// the spectral kernel, that of the eigen solve (see `Edge_weighted_heat_kernel`) and
+  /// of the heat regions.
   template <typename NamedParameters = parameters::Default_named_parameters>
   Point_set_anisotropic_heat_diffusion(const PointRange& points, unsigned int k,
                                        const NamedParameters& np = parameters::default_values())
@@ -118,23 +132,33 @@ public:
     sigma_ = internal::checked_sigma(internal::parameter_value(np, internal_np::sigma, defaults::sigma), where);
     kernel_tolerance_ = internal::checked_kernel_tolerance(
         internal::parameter_value(np, internal_np::local_kernel_tolerance, defaults::local_kernel_tolerance), where);
-    const Heat_kernel_method method =
-        internal::parameter_value(np, internal_np::kernel_method, Heat_kernel_method::automatic);
-    if(method != Heat_kernel_method::automatic && method != Heat_kernel_method::local)
+    const bool scale_invariant = internal::parameter_value(np, internal_np::scale_invariant_kernel, false);
+    if(internal::is_given(np, internal_np::coarse_vertex_count))
       internal::throw_invalid_input(std::string(where) +
-                                    ": only Heat_kernel_method::local (the default) is available on point sets");
-    if(internal::parameter_value(np, internal_np::scale_invariant_kernel, false))
+                                    ": coarse_vertex_count simplifies a mesh; on point sets the eigenpairs are "
+                                    "computed on all the points");
+    method_ = internal::resolve_kernel_method(np, scale_invariant);
+    if(method_ != Heat_kernel_method::local && method_ != Heat_kernel_method::spectral)
+      internal::throw_invalid_input(std::string(where) + ": unknown kernel_method");
+    if(method_ == Heat_kernel_method::local && scale_invariant)
       internal::throw_invalid_input(std::string(where) +
-                                    ": the scale-invariant kernel (eq. 14) needs the eigenvalues, which point sets do"
-                                    " not compute");
+                                    ": the scale-invariant kernel (eq. 14) needs the eigenvalues; use "
+                                    "Heat_kernel_method::spectral");
     const internal::Progress progress = internal::progress_of(np);
     ncc_ = std::make_shared<NCC>(points, k, np);
     const internal::Point_set_surface& surface = ncc_->surface();
     if(surface.number_of_points() == 0)
       internal::throw_invalid_input(std::string(where) + ": the point set is empty");
-    internal::build_local_diffusion_operator(surface.mesh, internal::assemble_point_set_heat_operators(surface, sigma_),
-                                             time_, construction_options(), progress, diffusion_operator_,
-                                             statistics_);
+    internal::Heat_operators operators = internal::assemble_point_set_heat_operators(surface, sigma_);
+    // (a program that never asks for the spectral kernel does not compile the eigen solver)
+    if constexpr(internal::can_select_spectral_kernel<NamedParameters>)
+      if(method_ == Heat_kernel_method::spectral)
+      {
+        build_spectral(operators, np, scale_invariant, progress);
+        return;
+      }
+    internal::build_local_diffusion_operator(surface.mesh, std::move(operators), time_, construction_options(),
+                                             progress, diffusion_operator_, statistics_);
   }
 
   /// The largest heat region, in points (that of `Anisotropic_heat_diffusion`).
@@ -146,6 +170,12 @@ public:
   double sigma() const { return sigma_; }
   /// The threshold \f$ \tau(t) = 0.01/(1+t) \f$ of the heat regions.
   double threshold() const { return 0.01 / (1. + time_); }
+  /// How the heat kernel was evaluated: `spectral` or `local`, never `automatic`.
+  Heat_kernel_method kernel_method() const { return method_; }
+  /// The eigenvalues of the spectral kernel, ascending (clamped to be nonnegative: the
+  /// zero eigenvalues come out of the solver as tiny values of either sign); empty with
+  /// the local kernel.
+  const Eigen::VectorXd& eigenvalues() const { return eigenvalues_; }
   /// The NCC of the points.
   const NCC& normal_controlled_coordinates() const { return *ncc_; }
   /// The number of points.
@@ -203,6 +233,39 @@ private:
     return {threshold(), maximum_region_size, kernel_tolerance_};
   }
 
+  // A_t from the truncated spectral kernel of eq. 13 (eq. 14's if scale-invariant): the
+  // smallest eigenpairs of the points' (L, B), as Edge_weighted_heat_kernel computes them
+  // on a mesh without a coarse level, then the heat regions of the mesh's spectral path.
+  template <typename NamedParameters>
+  void build_spectral(const internal::Heat_operators& operators, const NamedParameters& np, bool scale_invariant,
+                      const internal::Progress& progress)
+  {
+    const double requested_m =
+        double(internal::parameter_value(np, internal_np::number_of_eigenpairs, defaults::number_of_eigenpairs));
+    if(!(requested_m >= 1))
+      internal::throw_invalid_input("Point_set_anisotropic_heat_diffusion: number_of_eigenpairs must be positive");
+    const std::size_t n = number_of_points();
+    // One progress bar: the eigen solve takes most of it, the regions the rest.
+    internal::Generalized_eigenpairs pairs = internal::compute_smallest_generalized_eigenpairs(
+        operators.stiffness, operators.mass, Eigen::Index((std::min)(requested_m, double(n))),
+        progress.part(0., 0.8).as_callback());
+    eigenvalues_ = internal::clamped_eigenvalues(pairs.eigenvalues);
+    const double rate_unit = scale_invariant ? internal::first_nonzero_eigenvalue(eigenvalues_) : 1.;
+    const Eigen::VectorXd mass_diagonal = operators.mass.diagonal();
+    // psi = Phi exp(-rate t / 2), column by column
+    internal::Spectral_columns columns{pairs.eigenvectors, scale_invariant ? &mass_diagonal : nullptr};
+    for(Eigen::Index k = 0; k < columns.psi.cols(); ++k)
+      columns.psi.col(k) *= std::exp(-0.5 * eigenvalues_[k] / rate_unit * time_);
+    std::vector<std::size_t> order(n);
+    std::iota(order.begin(), order.end(), std::size_t(0));
+    Eigen::VectorXd column_sums, peaks;
+    const internal::Diffusion_construction_options options = construction_options();
+    const internal::Progress regions = progress.part(0.8, 1.);
+    internal::compute_heat_regions(columns, ncc_->surface().mesh, order, std::vector<std::size_t>(), options, regions,
+                                   diffusion_operator_, statistics_, column_sums, peaks);
+    internal::complete_diffusion_operator(column_sums, peaks, options, regions, diffusion_operator_);
+  }
+
   struct Column_major_copy
   {
     std::once_flag once;
@@ -213,6 +276,8 @@ private:
   double sigma_ = defaults::sigma;
   double time_ = defaults::time;
   double kernel_tolerance_ = defaults::local_kernel_tolerance;
+  Heat_kernel_method method_ = Heat_kernel_method::local;
+  Eigen::VectorXd eigenvalues_;  // of the spectral kernel
   internal::Diffusion_operator diffusion_operator_;
   std::shared_ptr<Column_major_copy> column_major_ = std::make_shared<Column_major_copy>();
   Heat_region_statistics statistics_;

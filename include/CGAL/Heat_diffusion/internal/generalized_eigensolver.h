@@ -32,6 +32,25 @@ namespace CGAL {
 namespace Heat_diffusion {
 namespace internal {
 
+// The eigenvalues as the heat kernels use them. L is positive semi-definite: the
+// solver's tiny negative values are rounding noise of the zero eigenvalues. Clamping
+// them keeps every decay rate >= 0, so exp(-rate t) never overflows (found by fuzzing: a
+// mesh whose eigenvalues were all noise gave eq. 14 rates of -772 and an infinite kernel).
+inline Eigen::VectorXd clamped_eigenvalues(const Eigen::VectorXd& eigenvalues) { return eigenvalues.cwiseMax(0.); }
+
+// lambda_* of eq. 14, from ascending clamped eigenvalues: the first one clearly above the
+// zero eigenvalues, which the solver returns as tiny values of either sign: one per
+// connected component, and one per piece that a small sigma cuts off numerically (weights
+// across sharp creases underflow). 1 if there is none.
+inline double first_nonzero_eigenvalue(const Eigen::VectorXd& eigenvalues)
+{
+  const double tiny = 1e-8 * std::abs(eigenvalues[eigenvalues.size() - 1]);
+  for(Eigen::Index k = 0; k < eigenvalues.size(); ++k)
+    if(eigenvalues[k] > tiny)
+      return eigenvalues[k];
+  return 1.;
+}
+
 // Eigenpairs of L phi = lambda B phi, sorted by ascending eigenvalue.
 // `eigenvectors` is n x m and B-orthonormal: Phi^T B Phi = I.
 // The remaining members describe how the pairs were obtained (tests, benchmarks).
