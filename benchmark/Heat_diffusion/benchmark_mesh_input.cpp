@@ -15,10 +15,15 @@
 //    tool's stages (its --json timings), the wall time, the CPU time (user + system)
 //    and the peak memory of the whole command, each run and the medians, and the
 //    ratios of the medians (default / 1e-4).
+// With --points, then the tool on the same vertices as points (issue of scans without a
+// mesh): the mesh's binary PLY against binary PLYs of its vertices without faces, with
+// the mesh's vertex normals (CGAL::Polygon_mesh_processing::compute_vertex_normals()) and
+// without normals (estimated by the tool), R runs each, alternating, with the tool's
+// defaults (8 neighbours): the same figures, and the ratios of the medians to the mesh's.
 // The machine may be shared: compare within a run (the CPU times move less with the
 // other jobs than the wall times).
 //
-// Usage: benchmark_mesh_input [TOOL] [--dir DIR] [--levels L] [--repeat R] [--data DATA_DIR]
+// Usage: benchmark_mesh_input [TOOL] [--dir DIR] [--levels L] [--repeat R] [--data DATA_DIR] [--points]
 //   TOOL: the heat_diffusion executable (default: the one next to this program); DIR
 //   (default /tmp): where the meshes and the tool's output go; L (default 3); R
 //   (default 3). The medians are those of the tool's runs that succeeded; if none did,
@@ -27,6 +32,9 @@
 #include "benchmark_command_line.h"
 #include "mesh_input.h"
 
+#include <CGAL/Point_set_3.h>
+#include <CGAL/Point_set_3/IO.h>
+#include <CGAL/Polygon_mesh_processing/compute_normal.h>
 #include <CGAL/subdivision_method_3.h>
 
 #include <algorithm>
@@ -91,14 +99,15 @@ double json_timing(const std::string& text, const std::string& key)
 // The settings the tool runs with: its defaults, and the local kernel's accuracy before
 // version 1.1.
 const char* const setting_names[2] = {"default", "1e-4"};
-const char* const setting_options[2] = {"", " --kernel-tolerance 1e-4"};
+const char* const setting_options[2] = {" --kernel local", " --kernel local --kernel-tolerance 1e-4"};
 
-Tool_run run_tool(const std::string& tool, const std::string& input, const std::string& prefix, int setting)
+// `options`: the tool's options after `features FILE -k 10`.
+Tool_run run_tool(const std::string& tool, const std::string& input, const std::string& prefix,
+                  const std::string& options)
 {
   const std::string json = prefix + ".json", time_log = prefix + ".time";
-  const std::string command = "/usr/bin/time -v " + tool + " features '" + input + "' -k 10 --kernel local" +
-                              setting_options[setting] + " --json --quiet -o '" + prefix + "' > '" + json + "' 2> '" +
-                              time_log + "'";
+  const std::string command = "/usr/bin/time -v " + tool + " features '" + input + "' -k 10" + options +
+                              " --json --quiet -o '" + prefix + "' > '" + json + "' 2> '" + time_log + "'";
   Tool_run run;
   if(std::system(command.c_str()) != 0)
     return run;
@@ -134,6 +143,91 @@ Tool_run run_tool(const std::string& tool, const std::string& input, const std::
   return run;
 }
 
+// The tool on the mesh's binary PLY and on its vertices as points (with the mesh's
+// vertex normals, and without), alternating; false if an input had no successful run.
+bool run_on_points(const std::string& tool, const std::string& mesh_file, const std::string& base,
+                   const std::string& dir, int repeat)
+{
+  const std::vector<std::string> inputs = {mesh_file, base + "_points_normals.ply", base + "_points.ply"};
+  const char* const input_names[3] = {"mesh", "points+N", "points"};
+  if(!std::filesystem::exists(inputs[1]) || !std::filesystem::exists(inputs[2]))
+  {
+    Mesh mesh;
+    if(!CGAL::IO::read_polygon_mesh(mesh_file, mesh))
+    {
+      std::fprintf(stderr, "cannot read %s\n", mesh_file.c_str());
+      return false;
+    }
+    auto normals = mesh.add_property_map<Mesh::Vertex_index, cli::Kernel::Vector_3>("v:benchmark_normal").first;
+    CGAL::Polygon_mesh_processing::compute_vertex_normals(mesh, normals);
+    CGAL::Point_set_3<cli::Kernel::Point_3> with_normals, without_normals;
+    with_normals.add_normal_map();
+    for(Mesh::Vertex_index v : mesh.vertices())
+    {
+      with_normals.insert(mesh.point(v), normals[v]);
+      without_normals.insert(mesh.point(v));
+    }
+    std::ofstream a(inputs[1], std::ios::binary), b(inputs[2], std::ios::binary);
+    CGAL::IO::set_binary_mode(a);
+    CGAL::IO::set_binary_mode(b);
+    if(!CGAL::IO::write_PLY(a, with_normals) || !CGAL::IO::write_PLY(b, without_normals))
+    {
+      std::fprintf(stderr, "cannot write the point files under %s\n", dir.c_str());
+      return false;
+    }
+  }
+  std::printf("\nthe same vertices as points: %s features FILE -k 10 --json, the tool's defaults (8 neighbours;"
+              " seconds, peak GiB)\n  %s, %s (the mesh's vertex normals), %s (normals estimated)\n",
+              tool.c_str(), inputs[0].c_str(), inputs[1].c_str(), inputs[2].c_str());
+  std::printf("  %-6s %-8s %8s %12s %10s %9s %7s %8s %8s %8s\n", "run", "input", "read", "ncc+A_t", "steps",
+              "features", "write", "wall", "cpu", "peak");
+  std::vector<std::vector<double>> columns[3];
+  for(auto& c : columns)
+    c.assign(8, std::vector<double>());
+  for(int r = 0; r < repeat; ++r)
+    for(int i = 0; i < 3; ++i)
+    {
+      const Tool_run run = run_tool(tool, inputs[std::size_t(i)], dir + "/benchmark_mesh_input_out", "");
+      if(!run.ok)
+      {
+        std::printf("  %-6d %-8s (the tool failed: see %s/benchmark_mesh_input_out.json and .time)\n", r + 1,
+                    input_names[i], dir.c_str());
+        continue;
+      }
+      std::printf("  %-6d %-8s %8.2f %12.2f %10.2f %9.2f %7.2f %8.2f %8.2f %8.2f\n", r + 1, input_names[i],
+                  run.stages[0], run.stages[1], run.stages[2], run.stages[3], run.stages[4], run.wall, run.cpu,
+                  run.peak_gib);
+      for(int s = 0; s < 5; ++s)
+        columns[i][std::size_t(s)].push_back(run.stages[std::size_t(s)]);
+      columns[i][5].push_back(run.wall);
+      columns[i][6].push_back(run.cpu);
+      columns[i][7].push_back(run.peak_gib);
+    }
+  if(std::any_of(std::begin(columns), std::end(columns), [](const auto& c) { return c[0].empty(); }))
+  {
+    std::printf("  no run of the tool succeeded on one of the inputs: no medians\n");
+    return false;
+  }
+  std::array<double, 8> medians[3];
+  for(int i = 0; i < 3; ++i)
+  {
+    for(int c = 0; c < 8; ++c)
+      medians[i][std::size_t(c)] = median(columns[i][std::size_t(c)]);
+    const std::array<double, 8>& m = medians[i];
+    std::printf("  %-6s %-8s %8.2f %12.2f %10.2f %9.2f %7.2f %8.2f %8.2f %8.2f\n", "median", input_names[i], m[0], m[1],
+                m[2], m[3], m[4], m[5], m[6], m[7]);
+  }
+  for(int i = 1; i < 3; ++i)
+  {
+    std::array<double, 8> q;
+    for(std::size_t c = 0; c < 8; ++c)
+      q[c] = medians[i][c] / medians[0][c];
+    std::printf("  %-6s %-8s %8.2f %12.2f %10.2f %9.2f %7.2f %8.2f %8.2f %8.2f   (%s / mesh)\n", "ratio",
+                input_names[i], q[0], q[1], q[2], q[3], q[4], q[5], q[6], q[7], input_names[i]);
+  }
+  return true;
+}
+
 int main(int argc, char** argv)
 {
   const std::string usage =
@@ -142,12 +236,15 @@ int main(int argc, char** argv)
       "  --dir     where the meshes and the tool's output go (default /tmp)\n"
       "  --levels  Loop subdivisions of armadillo, 0 to 4 (default 3: 1,664,002 vertices)\n"
       "  --repeat  runs of each reader and of the tool, 1 to 100 (default 3)\n"
-      "  --data    the directory of CGAL's meshes\n";
+      "  --data    the directory of CGAL's meshes\n"
+      "  --points  then the tool on the vertices as points, with and without normals\n";
   std::string tool = (std::filesystem::path(argv[0]).parent_path() / "heat_diffusion").string();
   std::string dir = "/tmp", data = CGAL_HEAT_DIFFUSION_DATA_DIR;
   int levels = 3, repeat = 3;
+  bool points = false;
   if(const auto exit_code = heat_diffusion_benchmark::read_command_line(
-         argc, argv, {}, {"--dir", "--levels", "--repeat", "--data"}, usage, [&](const cli::Arguments& a) {
+         argc, argv, {"--points"}, {"--dir", "--levels", "--repeat", "--data"}, usage, [&](const cli::Arguments& a) {
+           points = a.flag("--points");
            tool = heat_diffusion_benchmark::optional_argument(a, "TOOL", tool);
            // checked now: the meshes take minutes to write and read before the tool runs
            if(!std::filesystem::is_regular_file(tool) || access(tool.c_str(), X_OK) != 0)
@@ -215,7 +312,7 @@ int main(int argc, char** argv)
     for(int r = 0; r < repeat; ++r)
       for(int setting = 0; setting < 2; ++setting)
       {
-        const Tool_run run = run_tool(tool, file, dir + "/benchmark_mesh_input_out", setting);
+        const Tool_run run = run_tool(tool, file, dir + "/benchmark_mesh_input_out", setting_options[setting]);
         if(!run.ok)
         {
           std::printf("  %-6d %-8s (the tool failed: see %s/benchmark_mesh_input_out.json and .time)\n", r + 1,
@@ -252,5 +349,7 @@ int main(int argc, char** argv)
                 medians[0][6] / medians[1][6], medians[0][7] / medians[1][7]);
     std::printf("  (CGAL's reader on this file in this run: %.2f s)\n", median(cgal));
   }
+  if(points && !run_on_points(tool, files[1], base, dir, repeat))
+    failed = true;
   return failed ? 1 : 0;
 }
