@@ -143,6 +143,70 @@ Tool_run run_tool(const std::string& tool, const std::string& input, const std::
   return run;
 }
 
+// One way of running the tool in a comparison: a name, the input, the options.
+struct Tool_case
+{
+  std::string name, input, options;
+};
+
+void print_row(const std::string& run, const std::string& name, const std::array<double, 8>& v)
+{
+  std::printf("  %-6s %-13s %8.2f %12.2f %10.2f %9.2f %7.2f %8.2f %8.2f %8.2f\n", run.c_str(), name.c_str(), v[0], v[1],
+              v[2], v[3], v[4], v[5], v[6], v[7]);
+}
+
+// R runs of each case, alternating: each run's figures (the tool's stages, wall and CPU
+// time, peak memory), their medians, and the ratios of each case's medians to those of
+// case `reference`. False if a case had no successful run.
+bool compare_tool_runs(const std::string& tool, const std::string& dir, int repeat, const std::vector<Tool_case>& cases,
+                       std::size_t reference)
+{
+  std::printf("  %-6s %-13s %8s %12s %10s %9s %7s %8s %8s %8s\n", "run", "case", "read", "ncc+A_t", "steps",
+              "features", "write", "wall", "cpu", "peak");
+  std::vector<std::vector<std::array<double, 8> > > runs(cases.size());
+  for(int r = 0; r < repeat; ++r)
+    for(std::size_t i = 0; i < cases.size(); ++i)
+    {
+      const Tool_run run = run_tool(tool, cases[i].input, dir + "/benchmark_mesh_input_out", cases[i].options);
+      if(!run.ok)
+      {
+        std::printf("  %-6d %-13s (the tool failed: see %s/benchmark_mesh_input_out.json and .time)\n", r + 1,
+                    cases[i].name.c_str(), dir.c_str());
+        continue;
+      }
+      const std::array<double, 8> v = {run.stages[0], run.stages[1], run.stages[2], run.stages[3],
+                                       run.stages[4], run.wall,      run.cpu,       run.peak_gib};
+      print_row(std::to_string(r + 1), cases[i].name, v);
+      runs[i].push_back(v);
+    }
+  if(std::any_of(runs.begin(), runs.end(), [](const auto& r) { return r.empty(); }))
+  {
+    std::printf("  no run of the tool succeeded in one of the cases: no medians\n");
+    return false;
+  }
+  std::vector<std::array<double, 8> > medians(cases.size());
+  for(std::size_t i = 0; i < cases.size(); ++i)
+  {
+    for(std::size_t c = 0; c < 8; ++c)
+    {
+      std::vector<double> column;
+      for(const auto& v : runs[i])
+        column.push_back(v[c]);
+      medians[i][c] = median(column);
+    }
+    print_row("median", cases[i].name, medians[i]);
+  }
+  for(std::size_t i = 0; i < cases.size(); ++i)
+    if(i != reference)
+    {
+      std::array<double, 8> q;
+      for(std::size_t c = 0; c < 8; ++c)
+        q[c] = medians[i][c] / medians[reference][c];
+      print_row("ratio", cases[i].name + "/" + cases[reference].name, q);
+    }
+  return true;
+}
+
 // The tool on the mesh's binary PLY and on its vertices as points (with the mesh's
 // vertex normals, and without), alternating; false if an input had no successful run.
 bool run_on_points(const std::string& tool, const std::string& mesh_file, const std::string& base,
@@ -179,53 +243,9 @@ bool run_on_points(const std::string& tool, const std::string& mesh_file, const 
   std::printf("\nthe same vertices as points: %s features FILE -k 10 --json, the tool's defaults (8 neighbours;"
               " seconds, peak GiB)\n  %s, %s (the mesh's vertex normals), %s (normals estimated)\n",
               tool.c_str(), inputs[0].c_str(), inputs[1].c_str(), inputs[2].c_str());
-  std::printf("  %-6s %-8s %8s %12s %10s %9s %7s %8s %8s %8s\n", "run", "input", "read", "ncc+A_t", "steps",
-              "features", "write", "wall", "cpu", "peak");
-  std::vector<std::vector<double>> columns[3];
-  for(auto& c : columns)
-    c.assign(8, std::vector<double>());
-  for(int r = 0; r < repeat; ++r)
-    for(int i = 0; i < 3; ++i)
-    {
-      const Tool_run run = run_tool(tool, inputs[std::size_t(i)], dir + "/benchmark_mesh_input_out", "");
-      if(!run.ok)
-      {
-        std::printf("  %-6d %-8s (the tool failed: see %s/benchmark_mesh_input_out.json and .time)\n", r + 1,
-                    input_names[i], dir.c_str());
-        continue;
-      }
-      std::printf("  %-6d %-8s %8.2f %12.2f %10.2f %9.2f %7.2f %8.2f %8.2f %8.2f\n", r + 1, input_names[i],
-                  run.stages[0], run.stages[1], run.stages[2], run.stages[3], run.stages[4], run.wall, run.cpu,
-                  run.peak_gib);
-      for(int s = 0; s < 5; ++s)
-        columns[i][std::size_t(s)].push_back(run.stages[std::size_t(s)]);
-      columns[i][5].push_back(run.wall);
-      columns[i][6].push_back(run.cpu);
-      columns[i][7].push_back(run.peak_gib);
-    }
-  if(std::any_of(std::begin(columns), std::end(columns), [](const auto& c) { return c[0].empty(); }))
-  {
-    std::printf("  no run of the tool succeeded on one of the inputs: no medians\n");
-    return false;
-  }
-  std::array<double, 8> medians[3];
-  for(int i = 0; i < 3; ++i)
-  {
-    for(int c = 0; c < 8; ++c)
-      medians[i][std::size_t(c)] = median(columns[i][std::size_t(c)]);
-    const std::array<double, 8>& m = medians[i];
-    std::printf("  %-6s %-8s %8.2f %12.2f %10.2f %9.2f %7.2f %8.2f %8.2f %8.2f\n", "median", input_names[i], m[0], m[1],
-                m[2], m[3], m[4], m[5], m[6], m[7]);
-  }
-  for(int i = 1; i < 3; ++i)
-  {
-    std::array<double, 8> q;
-    for(std::size_t c = 0; c < 8; ++c)
-      q[c] = medians[i][c] / medians[0][c];
-    std::printf("  %-6s %-8s %8.2f %12.2f %10.2f %9.2f %7.2f %8.2f %8.2f %8.2f   (%s / mesh)\n", "ratio",
-                input_names[i], q[0], q[1], q[2], q[3], q[4], q[5], q[6], q[7], input_names[i]);
-  }
-  return true;
+  return compare_tool_runs(tool, dir, repeat,
+                           {{input_names[0], inputs[0], ""}, {input_names[1], inputs[1], ""}, {input_names[2], inputs[2], ""}},
+                           0);
 }
 
 int main(int argc, char** argv)
@@ -305,48 +325,9 @@ int main(int argc, char** argv)
 
     std::printf("  %s features FILE -k 10 --kernel local [--kernel-tolerance 1e-4] --json (seconds; peak GiB):\n",
                 tool.c_str());
-    std::printf("  %-6s %-8s %8s %12s %10s %9s %7s %8s %8s %8s\n", "run", "setting", "read", "ncc+A_t", "steps",
-                "features", "write", "wall", "cpu", "peak");
-    std::vector<std::vector<double>> columns[2] = {std::vector<std::vector<double>>(8),
-                                                   std::vector<std::vector<double>>(8)};
-    for(int r = 0; r < repeat; ++r)
-      for(int setting = 0; setting < 2; ++setting)
-      {
-        const Tool_run run = run_tool(tool, file, dir + "/benchmark_mesh_input_out", setting_options[setting]);
-        if(!run.ok)
-        {
-          std::printf("  %-6d %-8s (the tool failed: see %s/benchmark_mesh_input_out.json and .time)\n", r + 1,
-                      setting_names[setting], dir.c_str());
-          continue;
-        }
-        std::printf("  %-6d %-8s %8.2f %12.2f %10.2f %9.2f %7.2f %8.2f %8.2f %8.2f\n", r + 1, setting_names[setting],
-                    run.stages[0], run.stages[1], run.stages[2], run.stages[3], run.stages[4], run.wall, run.cpu,
-                    run.peak_gib);
-        for(int s = 0; s < 5; ++s)
-          columns[setting][s].push_back(run.stages[s]);
-        columns[setting][5].push_back(run.wall);
-        columns[setting][6].push_back(run.cpu);
-        columns[setting][7].push_back(run.peak_gib);
-      }
-    if(columns[0][0].empty() || columns[1][0].empty())
-    {
-      std::printf("  no run of the tool succeeded with one of the settings: no medians\n");
+    if(!compare_tool_runs(tool, dir, repeat,
+                          {{setting_names[0], file, setting_options[0]}, {setting_names[1], file, setting_options[1]}}, 1))
       failed = true;
-      continue;
-    }
-    std::array<double, 8> medians[2];
-    for(int setting = 0; setting < 2; ++setting)
-    {
-      for(int c = 0; c < 8; ++c)
-        medians[setting][std::size_t(c)] = median(columns[setting][c]);
-      const std::array<double, 8>& m = medians[setting];
-      std::printf("  %-6s %-8s %8.2f %12.2f %10.2f %9.2f %7.2f %8.2f %8.2f %8.2f\n", "median", setting_names[setting],
-                  m[0], m[1], m[2], m[3], m[4], m[5], m[6], m[7]);
-    }
-    std::printf("  %-6s %-8s %8.2f %12.2f %10.2f %9.2f %7.2f %8.2f %8.2f %8.2f\n", "ratio", "def/1e-4",
-                medians[0][0] / medians[1][0], medians[0][1] / medians[1][1], medians[0][2] / medians[1][2],
-                medians[0][3] / medians[1][3], medians[0][4] / medians[1][4], medians[0][5] / medians[1][5],
-                medians[0][6] / medians[1][6], medians[0][7] / medians[1][7]);
     std::printf("  (CGAL's reader on this file in this run: %.2f s)\n", median(cgal));
   }
   if(points && !run_on_points(tool, files[1], base, dir, repeat))

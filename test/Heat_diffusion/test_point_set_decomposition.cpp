@@ -14,6 +14,7 @@
 #include <CGAL/Point_set_3.h>
 #include <CGAL/Surface_mesh.h>
 
+#include "mesh_vertices_as_points.h"
 #include "test_support.h"
 
 #include <Eigen/Core>
@@ -38,18 +39,9 @@ typedef HD::Point_set_anisotropic_heat_diffusion<Point_set> Diffusion;
 
 constexpr unsigned int k = 8;
 
-// The vertices of `mesh` as points, with its NCC normals, in the order of vertex_index().
 Point_set points_with_normals(const Mesh& mesh)
 {
-  const HD::Normal_controlled_coordinates<Mesh> ncc(mesh);
-  std::vector<Vertex> by_index(mesh.number_of_vertices());
-  for(Vertex v : mesh.vertices())
-    by_index[ncc.vertex_index(v)] = v;
-  Point_set points;
-  points.add_normal_map();
-  for(Vertex v : by_index)
-    points.insert(mesh.point(v), ncc.normal(v));
-  return points;
+  return test_support::mesh_vertices_as_points(mesh, HD::Normal_controlled_coordinates<Mesh>(mesh));
 }
 
 Eigen::MatrixXd positions(const Point_set& points)

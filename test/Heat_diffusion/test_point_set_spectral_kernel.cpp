@@ -14,6 +14,7 @@
 #include <CGAL/Point_set_3.h>
 #include <CGAL/Surface_mesh.h>
 
+#include "mesh_vertices_as_points.h"
 #include "test_support.h"
 
 #include <Eigen/Core>
@@ -30,23 +31,10 @@ namespace HD = CGAL::Heat_diffusion;
 typedef CGAL::Exact_predicates_inexact_constructions_kernel Epick;
 typedef Epick::Point_3 Point;
 typedef CGAL::Surface_mesh<Point> Mesh;
-typedef Mesh::Vertex_index Vertex;
 typedef CGAL::Point_set_3<Point> Point_set;
 typedef HD::Point_set_anisotropic_heat_diffusion<Point_set> Diffusion;
 
 constexpr unsigned int k = 8;
-
-Point_set points_with_normals(const Mesh& mesh, const HD::Normal_controlled_coordinates<Mesh>& ncc)
-{
-  std::vector<Vertex> by_index(mesh.number_of_vertices());
-  for(Vertex v : mesh.vertices())
-    by_index[ncc.vertex_index(v)] = v;
-  Point_set points;
-  points.add_normal_map();
-  for(Vertex v : by_index)
-    points.insert(mesh.point(v), ncc.normal(v));
-  return points;
-}
 
 void run()
 {
@@ -54,7 +42,7 @@ void run()
   {
     const Mesh mesh = test_support::load<Mesh>("fandisk.off");
     const HD::Normal_controlled_coordinates<Mesh> mesh_ncc(mesh);
-    const Point_set points = points_with_normals(mesh, mesh_ncc);
+    const Point_set points = test_support::mesh_vertices_as_points(mesh, mesh_ncc);
     const std::size_t n = points.size();
 
     // Where the truncation is small (sigma = 1, t = 16, m = 300: t is above 4 ln 10 /
