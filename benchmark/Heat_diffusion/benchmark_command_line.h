@@ -11,6 +11,7 @@
 
 #include <iostream>
 #include <optional>
+#include <sstream>
 #include <string>
 #include <utility>
 #include <vector>
@@ -49,6 +50,20 @@ std::optional<int> read_command_line(int argc, char** argv, std::vector<std::str
     return int(cli::bad_usage);
   }
   return std::nullopt;
+}
+
+// The meshes of the option --meshes a.off,b.off (empty names skipped); a usage error if
+// it names none.
+inline std::vector<std::string> mesh_names(const cli::Arguments& arguments)
+{
+  std::vector<std::string> names;
+  std::stringstream list(arguments.value("--meshes", ""));
+  for(std::string name; std::getline(list, name, ',');)
+    if(!name.empty())
+      names.push_back(name);
+  if(names.empty())
+    throw cli::Usage_error("--meshes needs at least one mesh");
+  return names;
 }
 
 // The one optional argument of a benchmark (`what`: DATA_DIR, the directory of CGAL's

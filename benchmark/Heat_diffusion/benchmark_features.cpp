@@ -242,14 +242,8 @@ int main(int argc, char* argv[])
            seeds = unsigned(cli::parse_count("--seeds", a.value("--seeds", "3"), 1, 1000));
            if(a.has("--meshes"))
            {
-             meshes.clear();
+             meshes = heat_diffusion_benchmark::mesh_names(a);
              meshes_given = true;
-             std::stringstream list(a.value("--meshes", ""));
-             for(std::string name; std::getline(list, name, ',');)
-               if(!name.empty())
-                 meshes.push_back(name);
-             if(meshes.empty())
-               throw cli::Usage_error("--meshes needs at least one mesh");
            }
          }))
     return *exit_code;

@@ -150,11 +150,7 @@ int main(int argc, char** argv)
          argc, argv, {}, {"--meshes", "--times"}, usage, [&](const cli::Arguments& arguments) {
            data = heat_diffusion_benchmark::optional_argument(arguments, "DATA_DIR", data);
            if(arguments.has("--meshes"))
-           {
-             meshes = split(arguments.value("--meshes", ""));
-             if(meshes.empty())
-               throw cli::Usage_error("--meshes needs at least one mesh");
-           }
+             meshes = heat_diffusion_benchmark::mesh_names(arguments);
            if(arguments.has("--times"))
            {
              times.clear();

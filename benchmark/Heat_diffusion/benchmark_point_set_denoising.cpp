@@ -45,6 +45,7 @@
 
 #include "benchmark_command_line.h"
 #include "benchmark_mesh.h"
+#include "mesh_measures.h"
 
 #include <algorithm>
 #include <chrono>
@@ -105,30 +106,11 @@ std::string format(double x, int precision = 3)
 // coordinates), from a fixed seed.
 Points sample_surface(const Mesh& mesh, std::size_t n, unsigned seed)
 {
-  std::vector<Mesh::Face_index> faces(mesh.faces().begin(), mesh.faces().end());
-  std::vector<double> cumulative;
-  double total = 0;
-  for(Mesh::Face_index f : faces)
-    cumulative.push_back(total += CGAL::Polygon_mesh_processing::face_area(f, mesh));
+  const test_support::Uniform_surface_sampler<Mesh> sample(mesh);
   std::mt19937_64 random(seed);
-  std::uniform_real_distribution<double> uniform(0., 1.);
   Points points;
   for(std::size_t i = 0; i < n; ++i)
-  {
-    const std::size_t f =
-        std::size_t(std::upper_bound(cumulative.begin(), cumulative.end(), uniform(random) * total) - cumulative.begin());
-    auto h = mesh.halfedge(faces[(std::min)(f, faces.size() - 1)]);
-    const Point& a = mesh.point(mesh.source(h));
-    const Point& b = mesh.point(mesh.target(h));
-    const Point& c = mesh.point(mesh.target(mesh.next(h)));
-    double u = uniform(random), v = uniform(random);
-    if(u + v > 1)
-    {
-      u = 1 - u;
-      v = 1 - v;
-    }
-    points.emplace_back(a + u * (b - a) + v * (c - a), Vector(0, 0, 0));
-  }
+    points.emplace_back(sample(random), Vector(0, 0, 0));
   return points;
 }
 
@@ -301,15 +283,7 @@ int main(int argc, char* argv[])
            settings.peers = !a.flag("--no-peers");
            settings.wlop = settings.peers && !a.flag("--no-wlop");
            if(a.has("--meshes"))
-           {
-             meshes.clear();
-             std::stringstream list(a.value("--meshes", ""));
-             for(std::string name; std::getline(list, name, ',');)
-               if(!name.empty())
-                 meshes.push_back(name);
-             if(meshes.empty())
-               throw cli::Usage_error("--meshes needs at least one mesh");
-           }
+             meshes = heat_diffusion_benchmark::mesh_names(a);
            if(a.has("--noise"))
            {
              noise_levels.clear();

@@ -3,16 +3,18 @@
 //
 // Shared by the tests and the benchmarks, so that both measure the same way: the mean
 // edge length, seeded noise along the normals (Gaussian on every vertex, or impulsive),
-// 2-rings and the re-detection of features within them, and the bilateral denoising
-// baseline.
+// 2-rings and the re-detection of features within them, the bilateral denoising
+// baseline, and points sampled uniformly on a surface.
 
 #ifndef CGAL_HEAT_DIFFUSION_MESH_MEASURES_H
 #define CGAL_HEAT_DIFFUSION_MESH_MEASURES_H
 
 #include <CGAL/squared_distance_3.h>
 #include <CGAL/Polygon_mesh_processing/compute_normal.h>
+#include <CGAL/Polygon_mesh_processing/measure.h>
 #include <CGAL/boost/graph/iterator.h>
 
+#include <algorithm>
 #include <cmath>
 #include <cstddef>
 #include <random>
@@ -21,6 +23,51 @@
 #include <vector>
 
 namespace test_support {
+
+// Points uniform on the surface of a triangle mesh: a face drawn by area, then uniform
+// barycentric coordinates in it (three draws of `random`, in this order), so that the
+// samples of a seed are the same wherever they are drawn.
+template <typename Mesh>
+class Uniform_surface_sampler
+{
+public:
+  typedef typename Mesh::Face_index Face;
+  typedef typename Mesh::Point Point;
+
+  explicit Uniform_surface_sampler(const Mesh& mesh) : mesh_(mesh), faces_(mesh.faces().begin(), mesh.faces().end())
+  {
+    for(Face f : faces_)
+      cumulative_.push_back(total_ += CGAL::Polygon_mesh_processing::face_area(f, mesh));
+  }
+
+  // A point, and the face it lies in in `face` if not null.
+  template <typename Generator>
+  Point operator()(Generator& random, Face* face = nullptr) const
+  {
+    std::uniform_real_distribution<double> uniform(0., 1.);
+    const std::size_t f = std::size_t(std::upper_bound(cumulative_.begin(), cumulative_.end(), uniform(random) * total_) -
+                                      cumulative_.begin());
+    const Face chosen = faces_[(std::min)(f, faces_.size() - 1)];
+    if(face != nullptr)
+      *face = chosen;
+    const auto h = mesh_.halfedge(chosen);
+    const Point &a = mesh_.point(mesh_.source(h)), &b = mesh_.point(mesh_.target(h)),
+                &c = mesh_.point(mesh_.target(mesh_.next(h)));
+    double u = uniform(random), v = uniform(random);
+    if(u + v > 1)
+    {
+      u = 1 - u;
+      v = 1 - v;
+    }
+    return a + u * (b - a) + v * (c - a);
+  }
+
+private:
+  const Mesh& mesh_;
+  std::vector<Face> faces_;
+  std::vector<double> cumulative_;
+  double total_ = 0;
+};
 
 template <typename Mesh>
 double mean_edge_length(const Mesh& mesh)

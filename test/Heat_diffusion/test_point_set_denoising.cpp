@@ -59,33 +59,18 @@ double diagonal(const Mesh& mesh)
 std::vector<Point> noisy_samples(const Mesh& mesh, std::size_t n, double noise, unsigned seed,
                                  std::vector<Mesh::Face_index>* sources = nullptr)
 {
-  std::vector<Mesh::Face_index> faces(mesh.faces().begin(), mesh.faces().end());
-  std::vector<double> cumulative;
-  double total = 0;
-  for(Mesh::Face_index f : faces)
-    cumulative.push_back(total += CGAL::Polygon_mesh_processing::face_area(f, mesh));
+  const test_support::Uniform_surface_sampler<Mesh> sample(mesh);
   std::mt19937_64 random(seed);
-  std::uniform_real_distribution<double> uniform(0., 1.);
   std::normal_distribution<double> gaussian(0., noise);
   std::vector<Point> points;
   for(std::size_t i = 0; i < n; ++i)
   {
-    const std::size_t f =
-        std::size_t(std::upper_bound(cumulative.begin(), cumulative.end(), uniform(random) * total) - cumulative.begin());
-    const Mesh::Face_index face = faces[(std::min)(f, faces.size() - 1)];
+    Mesh::Face_index face;
+    const Point p = sample(random, &face);
     if(sources)
       sources->push_back(face);
-    const auto h = mesh.halfedge(face);
-    const Point &a = mesh.point(mesh.source(h)), &b = mesh.point(mesh.target(h)),
-                &c = mesh.point(mesh.target(mesh.next(h)));
-    double u = uniform(random), v = uniform(random);
-    if(u + v > 1)
-    {
-      u = 1 - u;
-      v = 1 - v;
-    }
     const double x = gaussian(random), y = gaussian(random), z = gaussian(random);
-    points.push_back(a + u * (b - a) + v * (c - a) + Vector(x, y, z));
+    points.push_back(p + Vector(x, y, z));
   }
   return points;
 }
