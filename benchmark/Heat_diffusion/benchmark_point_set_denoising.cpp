@@ -9,7 +9,13 @@
 //    same neighbours;
 //  - jet_smooth_point_set(), best of a grid of its neighbour count (12 to 192);
 //  - wlop_simplify_and_regularize_point_set() (Huang et al. 2009), at its defaults but
-//    for the share of points it keeps.
+//    for the share of points it keeps;
+//  - the package's other way to denoise points, the paper's signature diffusion (eq.
+//    22-23, as denoise_mesh()'s signature_diffusion): iterations of
+//    filter_point_set_shape() with the single weight 0 (the NS replaced by its diffused
+//    F^s, the points moved along their normals to match it), at the mesh denoiser's sigma,
+//    time and anchor weight, best of a grid of s (1, 3, 10) and iterations (1 to 4), on
+//    normals re-estimated before each iteration as for the peers.
 // The points are sampled uniformly on the surfaces of clean CGAL meshes (fixed seeds),
 // then Gaussian noise is added to every coordinate (standard deviation: a percentage of
 // the bounding-box diagonal, fixed seeds). Every method is measured against the clean
@@ -20,10 +26,12 @@
 // error); the time, which includes the normals that a method needs as input. The grids
 // are searched for the lowest mean distance, against the clean surface: the best setting
 // that a user with the clean surface could pick. denoise_point_set() runs at one setting
-// on every row (k = 24, the library's defaults), on normals estimated as for the peers.
+// on every row (k = defaults::point_set_denoising::number_of_neighbors, 24, and the
+// library's defaults), on normals estimated as for the peers.
 //
 // Usage: benchmark_point_set_denoising [DATA_DIR] [--meshes a.off,b.off] [--points N]
 //          [--noise p1,p2] [--k K] [--normal-sigma S] [--steps S] [--limit L] [--no-wlop] [--no-peers]
+//          [--no-signature]
 
 #include <CGAL/Exact_predicates_inexact_constructions_kernel.h>
 #include <CGAL/Surface_mesh.h>
@@ -41,6 +49,7 @@
 #include <CGAL/property_map.h>
 #include <CGAL/wlop_simplify_and_regularize_point_set.h>
 
+#include <CGAL/Heat_diffusion/point_set_decomposition.h>
 #include <CGAL/Heat_diffusion/point_set_denoising.h>
 
 #include "benchmark_command_line.h"
@@ -167,11 +176,11 @@ Measure measure_without_normals(const Clean_surface& clean, Points points, doubl
 
 struct Settings
 {
-  unsigned k = 24;
+  unsigned k = HD::defaults::point_set_denoising::number_of_neighbors;
   double normal_sigma = 0;  // automatic
   std::size_t steps = HD::defaults::point_set_denoising::number_of_steps;
   double limit = HD::defaults::point_set_denoising::displacement_limit;
-  bool wlop = true, peers = true;
+  bool wlop = true, peers = true, signature = true;
 };
 
 Measure run_denoise_point_set(const Clean_surface& clean, Points points, const Settings& s, double noise)
@@ -233,6 +242,33 @@ Measure best_bilateral(const Clean_surface& clean, const Points& noisy)
   return best;
 }
 
+Measure best_signature_diffusion(const Clean_surface& clean, const Points& noisy)
+{
+  namespace D = HD::defaults;
+  Measure best;
+  best.mean = -1;
+  for(std::size_t steps : {1u, 3u, 10u})
+  {
+    Points points = noisy;
+    const auto start = std::chrono::steady_clock::now();
+    for(int iteration = 1; iteration <= 4; ++iteration)
+    {
+      estimate_normals(points, 24, true);
+      HD::filter_point_set_shape(
+          points, D::number_of_neighbors, std::vector<double>{0.},
+          HD::parameters::combine(CGAL::parameters::point_map(point_map).normal_map(normal_map),
+                                  HD::parameters::steps_per_level(steps),
+                                  HD::parameters::anchor_weight(D::denoising::anchor_weight),
+                                  HD::parameters::sigma(D::denoising::sigma), HD::parameters::time(D::denoising::time)));
+      Measure m = measure_without_normals(clean, points, seconds_since(start));
+      m.setting = "s " + std::to_string(steps) + ", " + std::to_string(iteration) + " it";
+      if(best.mean < 0 || m.mean < best.mean)
+        best = m;
+    }
+  }
+  return best;
+}
+
 Measure run_wlop(const Clean_surface& clean, const Points& noisy)
 {
   std::vector<Point> input, output;
@@ -265,23 +301,27 @@ int main(int argc, char* argv[])
   const std::string usage =
       "usage: benchmark_point_set_denoising [DATA_DIR] [--meshes a.off,b.off] [--points N] [--noise p1,p2]\n"
       "                                     [--k K] [--normal-sigma S] [--steps S] [--limit L] [--no-wlop] [--no-peers]\n"
+      "                                     [--no-signature]\n"
       "  DATA_DIR        CGAL's meshes (default: the build's data/meshes)\n"
       "  --meshes        meshes sampled (default fandisk.off,armadillo.off,mech-holes-shark.off)\n"
       "  --points        points sampled on each mesh, 100 to 1000000 (default 20000)\n"
       "  --noise         noise levels, in percent of the bounding-box diagonal, > 0 and <= 10\n"
       "                  (default 0.25,0.5,1)\n"
-      "  --k             denoise_point_set's neighbour count, 2 to 200 (default 24)\n"
+      "  --k             denoise_point_set's neighbour count, 2 to 200 (default\n"
+      "                  defaults::point_set_denoising::number_of_neighbors, 24)\n"
       "  --normal-sigma  denoise_point_set's normal_sigma (default: automatic, the library's)\n"
       "  --steps         denoise_point_set's number_of_steps, 0 to 100 (default the library's)\n"
       "  --limit         denoise_point_set's displacement_limit (default the library's)\n"
+      "  --no-signature  without the signature diffusion rows\n"
       "  --no-wlop       leave WLOP out\n"
       "  --no-peers      only the noisy input and denoise_point_set (to try its settings)\n";
   if(const auto exit_code = heat_diffusion_benchmark::read_command_line(
-         argc, argv, {"--no-wlop", "--no-peers"}, {"--meshes", "--points", "--noise", "--k", "--normal-sigma", "--steps", "--limit"},
+         argc, argv, {"--no-wlop", "--no-peers", "--no-signature"}, {"--meshes", "--points", "--noise", "--k", "--normal-sigma", "--steps", "--limit"},
          usage, [&](const cli::Arguments& a) {
            data = heat_diffusion_benchmark::optional_argument(a, "DATA_DIR", data);
            settings.peers = !a.flag("--no-peers");
            settings.wlop = settings.peers && !a.flag("--no-wlop");
+           settings.signature = settings.peers && !a.flag("--no-signature");
            if(a.has("--meshes"))
              meshes = heat_diffusion_benchmark::mesh_names(a);
            if(a.has("--noise"))
@@ -299,7 +339,8 @@ int main(int argc, char* argv[])
                throw cli::Usage_error("--noise needs at least one level");
            }
            point_count = cli::parse_count("--points", a.value("--points", "20000"), 100, 1000000);
-           settings.k = unsigned(cli::parse_count("--k", a.value("--k", "24"), 2, 200));
+           settings.k = unsigned(cli::parse_count(
+               "--k", a.value("--k", std::to_string(HD::defaults::point_set_denoising::number_of_neighbors)), 2, 200));
            if(a.has("--normal-sigma"))
              settings.normal_sigma = cli::parse_number("--normal-sigma", a.value("--normal-sigma", ""), 0., true);
            if(a.has("--steps"))
@@ -317,6 +358,8 @@ int main(int argc, char* argv[])
   }
   if(settings.wlop)
     methods.push_back("wlop_simplify_and_regularize_point_set");
+  if(settings.signature)
+    methods.push_back("signature diffusion (filter_point_set_shape)");
   std::map<std::string, std::vector<Measure> > results;
   std::vector<std::string> losing_rows;
   std::cout << "| mesh | points | noise % | method | best setting | mean | RMS | angle | time s |\n"
@@ -358,12 +401,16 @@ int main(int argc, char* argv[])
         }
         if(settings.wlop)
           row["wlop_simplify_and_regularize_point_set"] = run_wlop(clean, noisy);
+        if(settings.signature)
+          row["signature diffusion (filter_point_set_shape)"] = best_signature_diffusion(clean, noisy);
         double best_peer = -1;
         for(const std::string& method : methods)
         {
           const Measure& m = row[method];
           results[method].push_back(m);
-          if(method != "noisy input" && method != "denoise_point_set" && (best_peer < 0 || m.mean < best_peer))
+          // (the peers are the other libraries' methods; signature diffusion is the package's own)
+          if(method != "noisy input" && method != "denoise_point_set" && method.rfind("signature", 0) != 0 &&
+             (best_peer < 0 || m.mean < best_peer))
             best_peer = m.mean;
           std::cout << "| " << name << " | " << point_count << " | " << format(level, 2) << " | " << method << " | "
                     << m.setting << " | " << format(m.mean) << " | " << format(m.rms) << " | " << format(m.angle, 2)

@@ -1015,6 +1015,16 @@ py::array_t<double> synthesize(py::object bands_object, py::object residual_obje
   return make_vector(std::vector<double>(result.data(), result.data() + result.size()));
 }
 
+// The weights of a shape filter, as the tool's --weights: one band per weight.
+std::vector<double> checked_shape_weights(const py::object& weights_object, const std::string& function)
+{
+  const std::vector<double> weights = number_list(weights_object, function, "weights");
+  if(weights.empty() || weights.size() > 1000)
+    invalid(function, "weights must have 1 to 1000 values (one per detail band), not " +
+                          std::to_string(weights.size()));
+  return weights;
+}
+
 py::array_t<double> filter_shape(py::object V, py::object F, py::object weights_object, py::object steps_object,
                                  py::object anchor_object, py::object sigma, py::object time, py::object kernel,
                                  py::object kernel_tolerance, py::object m, py::object coarse,
@@ -1024,10 +1034,7 @@ py::array_t<double> filter_shape(py::object V, py::object F, py::object weights_
   auto mesh = make_mesh(V, F, function);
   const Diffusion_options o =
       diffusion_options(function, sigma, time, kernel, m, coarse, scale_invariant, kernel_tolerance);
-  const std::vector<double> weights = number_list(weights_object, function, "weights");
-  if(weights.empty() || weights.size() > 1000)  // as the tool's --weights: one band per weight
-    invalid(function, "weights must have 1 to 1000 values (one per detail band), not " +
-                          std::to_string(weights.size()));
+  const std::vector<double> weights = checked_shape_weights(weights_object, function);
   const std::optional<long long> steps_per_level = optional_whole_number(steps_object, function, "steps_per_level");
   const std::optional<double> anchor_weight = optional_number(anchor_object, function, "anchor_weight");
   Python_progress guard(std::move(progress));
@@ -1066,6 +1073,31 @@ py::array_t<double> heat_kernel_signature(py::object V, py::object F, py::object
   return make_vector(hks);
 }
 
+// The options that denoise_mesh() and denoise_point_set() share, checked; None is left
+// empty, for the package's own default.
+struct Denoising_options
+{
+  std::optional<unsigned> iterations;
+  std::optional<std::size_t> steps;
+  std::optional<double> normal_sigma;
+  std::optional<double> displacement_limit;
+};
+
+Denoising_options denoising_options(const std::string& function, const py::object& iterations,
+                                    const py::object& steps, const py::object& normal_sigma,
+                                    const py::object& displacement_limit)
+{
+  Denoising_options o;
+  if(!iterations.is_none())
+    o.iterations = unsigned(
+        bounded_whole_number(iterations, function, "number_of_iterations", 0, (std::numeric_limits<unsigned>::max)()));
+  if(!steps.is_none())
+    o.steps = std::size_t(bounded_whole_number(steps, function, "number_of_steps", 0));
+  o.normal_sigma = optional_number(normal_sigma, function, "normal_sigma");
+  o.displacement_limit = optional_number(displacement_limit, function, "displacement_limit");
+  return o;
+}
+
 // Every argument None is left to denoise_mesh(), whose defaults depend on the method
 // and, for the normal widths and the stop, on the mesh.
 py::array_t<double> denoise(py::object V, py::object F, py::object method_object, py::object iterations_object,
@@ -1087,22 +1119,15 @@ py::array_t<double> denoise(py::object V, py::object F, py::object method_object
       invalid(function, "method must be 'normal_filtering', 'signature_diffusion' or None, not " +
                             (name.empty() ? type_name(method_object) : "'" + name + "'"));
   }
-  std::optional<unsigned> iterations;
-  if(!iterations_object.is_none())
-    iterations = unsigned(bounded_whole_number(iterations_object, function, "number_of_iterations", 0,
-                                               (std::numeric_limits<unsigned>::max)()));
-  std::optional<std::size_t> steps;
-  if(!steps_object.is_none())
-    steps = std::size_t(bounded_whole_number(steps_object, function, "number_of_steps", 0));
+  const Denoising_options options =
+      denoising_options(function, iterations_object, steps_object, normal_sigma, displacement_object);
   const Diffusion_options o = diffusion_options(function, sigma, time, kernel, m, coarse, py::none());
   const std::optional<double> anchor_weight = optional_number(anchor_object, function, "anchor_weight");
-  const std::optional<double> sigma_of_normals = optional_number(normal_sigma, function, "normal_sigma");
-  const std::optional<double> displacement_limit = optional_number(displacement_object, function, "displacement_limit");
   Python_progress guard(std::move(progress));
   const auto np = HD::parameters::combine(
-      HD::parameters::denoising_method(method), CGAL::parameters::number_of_iterations(iterations),
-      HD::parameters::number_of_steps(steps), HD::parameters::displacement_limit(displacement_limit),
-      HD::parameters::normal_sigma(sigma_of_normals), HD::parameters::sigma(o.sigma), HD::parameters::time(o.time),
+      HD::parameters::denoising_method(method), CGAL::parameters::number_of_iterations(options.iterations),
+      HD::parameters::number_of_steps(options.steps), HD::parameters::displacement_limit(options.displacement_limit),
+      HD::parameters::normal_sigma(options.normal_sigma), HD::parameters::sigma(o.sigma), HD::parameters::time(o.time),
       HD::parameters::kernel_method(o.method), HD::parameters::number_of_eigenpairs(o.eigenpairs),
       HD::parameters::coarse_vertex_count(o.coarse), HD::parameters::anchor_weight(anchor_weight),
       HD::parameters::progress_callback(guard.callback()));

@@ -14,6 +14,8 @@
 
 #include <CGAL/Heat_diffusion/parameter_defaults.h>
 #include <CGAL/Heat_diffusion/point_set_anisotropic_heat_diffusion.h>
+#include <CGAL/Heat_diffusion/point_set_decomposition.h>
+#include <CGAL/Heat_diffusion/point_set_denoising.h>
 #include <CGAL/Heat_diffusion/point_set_multiscale_features.h>
 #include <CGAL/Heat_diffusion/point_set_normal_controlled_coordinates.h>
 
@@ -120,6 +122,21 @@ inline py::array_t<double> vector_array(const Eigen::VectorXd& v)
   return a;
 }
 
+// The positions (n, 3) of the points, or the normals of their normal map, in their order.
+inline py::array_t<double> rows_array(const Point_set& points, bool normals)
+{
+  py::array_t<double> a({py::ssize_t(points.size()), py::ssize_t(3)});
+  double* out = a.mutable_data();
+  std::size_t i = 0;
+  for(Point_set::Index index : points)
+  {
+    for(int c = 0; c < 3; ++c)
+      out[3 * i + std::size_t(c)] = normals ? points.normal(index)[c] : points.point(index)[c];
+    ++i;
+  }
+  return a;
+}
+
 // The NCC of a point set, without the GIL.
 inline std::unique_ptr<Point_set_NCC> make_ncc(const Point_set& points, const Neighbourhood& nb)
 {
@@ -180,16 +197,14 @@ class Heat_diffusion
 {
 public:
   Heat_diffusion(py::object P, py::object N, py::object neighbors, py::object radius, py::object sigma,
-                 py::object time, py::object kernel, py::object normalization, py::object progress,
+                 py::object time, py::object kernel, py::object kernel_tolerance, py::object m,
+                 py::object scale_invariant, py::object normalization, py::object progress,
                  const std::string& function = "PointSetHeatDiffusion")
   {
     const Neighbourhood nb = neighbourhood(neighbors, radius, function);
-    // (m, coarse and scale_invariant concern the spectral kernel, which the module, as the
-    // tool, does not offer on point sets yet; the C++ class has it)
-    Diffusion_options o = diffusion_options(function, sigma, time, kernel, py::none(), py::none(), py::none());
-    if(o.method && *o.method == HD::Heat_kernel_method::spectral)
-      invalid(function, "on a point set the module has the local kernel only (kernel='spectral' is in the C++ "
-                        "library's Point_set_anisotropic_heat_diffusion)");
+    // (no coarse level: the spectral kernel of a point set has the points' own eigenpairs)
+    Diffusion_options o =
+        diffusion_options(function, sigma, time, kernel, m, py::none(), scale_invariant, kernel_tolerance);
     if(!normalization.is_none())
     {
       const std::string name = py::isinstance<py::str>(normalization) ? normalization.cast<std::string>() : "";
@@ -209,6 +224,10 @@ public:
 
   std::size_t number_of_points() const { return diffusion_->number_of_points(); }
   double time() const { return diffusion_->time(); }
+  std::string kernel() const
+  {
+    return diffusion_->kernel_method() == HD::Heat_kernel_method::local ? "local" : "spectral";
+  }
   std::string normalization() const
   {
     return diffusion_->operator_normalization() == HD::Operator_normalization::balanced ? "balanced" : "columns";
@@ -295,6 +314,30 @@ public:
     }));
   }
 
+  py::tuple decompose(py::object field, py::object levels, py::object steps_per_level) const
+  {
+    return decompose_as("PointSetHeatDiffusion.decompose", field, levels, steps_per_level);
+  }
+
+  // The bands (levels, n) and the residual (n,) of decompose_point_set_field().
+  py::tuple decompose_as(const std::string& function, py::object field, py::object levels_object,
+                         py::object steps_object) const
+  {
+    const std::size_t levels = checked_levels(levels_object, function);
+    const std::optional<long long> steps_per_level = optional_whole_number(steps_object, function, "steps_per_level");
+    const Eigen::VectorXd f0 = field.is_none() ? ns_vector() : field_vector(field, function);
+    const std::vector<Eigen::VectorXd> bands = interruptible([&](const auto& progress) {
+      // None: decompose_point_set_field()'s own default.
+      return HD::decompose_point_set_field(
+          *diffusion_, f0, levels, HD::parameters::combine(progress, HD::parameters::steps_per_level(steps_per_level)));
+    });
+    const std::size_t n = number_of_points();
+    py::array_t<double> band_array({py::ssize_t(levels), py::ssize_t(n)});
+    for(std::size_t j = 0; j < levels; ++j)
+      std::copy(bands[j].data(), bands[j].data() + n, band_array.mutable_data() + j * n);
+    return py::make_tuple(band_array, vector_array(bands.back()));
+  }
+
 private:
   Eigen::VectorXd ns_vector() const
   {
@@ -317,13 +360,80 @@ private:
 
 inline py::list multiscale_features(py::object P, py::object N, py::object field, py::object steps,
                                     py::object feature_threshold, py::object neighbors, py::object radius,
-                                    py::object sigma, py::object time, py::object kernel, py::object progress)
+                                    py::object sigma, py::object time, py::object kernel, py::object kernel_tolerance,
+                                    py::object m, py::object scale_invariant, py::object progress)
 {
   const std::string function = "point_set_multiscale_features";
   bool single = false;
   step_list(steps, function, single, feature_scales());  // before the diffusion is built
-  const Heat_diffusion diffusion(P, N, neighbors, radius, sigma, time, kernel, py::none(), progress, function);
+  const Heat_diffusion diffusion(P, N, neighbors, radius, sigma, time, kernel, kernel_tolerance, m, scale_invariant,
+                                 py::none(), progress, function);
   return diffusion.features_as(function, field, steps, feature_threshold);
+}
+
+inline py::tuple decompose(py::object P, py::object N, py::object field, py::object levels,
+                           py::object steps_per_level, py::object neighbors, py::object radius, py::object sigma,
+                           py::object time, py::object kernel, py::object kernel_tolerance, py::object m,
+                           py::object scale_invariant, py::object progress)
+{
+  const std::string function = "point_set_decompose";
+  checked_levels(levels, function);  // before the diffusion is built
+  const Heat_diffusion diffusion(P, N, neighbors, radius, sigma, time, kernel, kernel_tolerance, m, scale_invariant,
+                                 py::none(), progress, function);
+  return diffusion.decompose_as(function, field, levels, steps_per_level);
+}
+
+// The new positions (n, 3) of filter_point_set_shape().
+inline py::array_t<double> filter_shape(py::object P, py::object N, py::object weights_object,
+                                        py::object steps_object, py::object anchor_object, py::object neighbors,
+                                        py::object radius, py::object sigma, py::object time, py::object kernel,
+                                        py::object kernel_tolerance, py::object m, py::object scale_invariant,
+                                        py::object progress)
+{
+  const std::string function = "point_set_filter_shape";
+  const Neighbourhood nb = neighbourhood(neighbors, radius, function);
+  const Diffusion_options o =
+      diffusion_options(function, sigma, time, kernel, m, py::none(), scale_invariant, kernel_tolerance);
+  const std::vector<double> weights = checked_shape_weights(weights_object, function);
+  const std::optional<long long> steps_per_level = optional_whole_number(steps_object, function, "steps_per_level");
+  const std::optional<double> anchor_weight = optional_number(anchor_object, function, "anchor_weight");
+  const auto points = make_point_set(P, N, function);
+  Python_progress guard(std::move(progress));
+  // None: filter_point_set_shape()'s own defaults.
+  const auto np = HD::parameters::combine(diffusion_parameters(o, guard.callback()),
+                                          HD::parameters::steps_per_level(steps_per_level),
+                                          HD::parameters::anchor_weight(anchor_weight));
+  guard.run([&] {
+    with_neighbourhood(nb, np, [&](const auto& all) { HD::filter_point_set_shape(*points, nb.k, weights, all); });
+  });
+  return rows_array(*points, false);
+}
+
+// (positions (n, 3), normals (n, 3) or None) of denoise_point_set(): the filtered normals
+// where N is given, None where the package estimated them.
+inline py::tuple denoise(py::object P, py::object N, py::object neighbors, py::object radius,
+                         py::object iterations_object, py::object steps_object, py::object normal_sigma,
+                         py::object displacement_object, py::object progress)
+{
+  const std::string function = "point_set_denoise";
+  Neighbourhood nb = neighbourhood(neighbors, radius, function);
+  if(neighbors.is_none())
+    nb.k = HD::defaults::point_set_denoising::number_of_neighbors;
+  const Denoising_options options = denoising_options(function, iterations_object, steps_object, normal_sigma,
+                                                      displacement_object);
+  const auto points = make_point_set(P, N, function);
+  Python_progress guard(std::move(progress));
+  // None: denoise_point_set()'s own defaults.
+  const auto np = HD::parameters::combine(
+      CGAL::parameters::number_of_iterations(options.iterations), HD::parameters::number_of_steps(options.steps),
+      HD::parameters::normal_sigma(options.normal_sigma),
+      HD::parameters::displacement_limit(options.displacement_limit),
+      HD::parameters::progress_callback(guard.callback()));
+  guard.run([&] {
+    with_neighbourhood(nb, np, [&](const auto& all) { HD::denoise_point_set(*points, nb.k, all); });
+  });
+  return py::make_tuple(rows_array(*points, false),
+                        points->has_normal_map() ? py::object(rows_array(*points, true)) : py::object(py::none()));
 }
 
 // The point-set functions and PointSetHeatDiffusion in `module`.
@@ -333,7 +443,9 @@ inline void add_point_set_functions(py::module_& module)
   const std::string diffusion_doc =
       "Every keyword left out or None takes the package's default: sigma: edge-weight width of eq. 10\n"
       "(default " + number_text(D::sigma) + "); time: t of one step, on the surface rescaled to area = number of "
-      "points (default " + number_text(D::time) + ");\nkernel: 'local' or None (the only kernel on point sets); "
+      "points (default " + number_text(D::time) + ");\nkernel: 'local', 'spectral' or None (the package's choice: spectral if m or scale_invariant is\n"
+      "given); kernel_tolerance: the local kernel's accuracy; m, scale_invariant: the spectral kernel's\n"
+      "eigenpairs, as for HeatDiffusion (no coarse level on points); "
       "normalization (PointSetHeatDiffusion): 'balanced' (the\ndefault: A_t doubly stochastic) or 'columns' (the "
       "paper's); progress: None or a callable f(fraction), as\nfor HeatDiffusion; Ctrl-C cancels the construction "
       "(KeyboardInterrupt).\n";
@@ -348,13 +460,15 @@ inline void add_point_set_functions(py::module_& module)
       "ValueError naming the point.\n";
   py::class_<Heat_diffusion>(module, "PointSetHeatDiffusion",
                              ("The operator A_t of the point set P (normals N), built once, applied many times,\n"
-                              "with the local kernel.\n" + neighbourhood_doc + diffusion_doc)
+                              "with the local or the spectral kernel.\n" + neighbourhood_doc + diffusion_doc)
                                  .c_str())
       .def(py::init<py::object, py::object, py::object, py::object, py::object, py::object, py::object, py::object,
-                    py::object>(),
+                    py::object, py::object, py::object, py::object>(),
            py::arg("P"), py::arg("N") = py::none(), py::kw_only(), py::arg("neighbors") = py::none(),
            py::arg("neighbor_radius") = py::none(), py::arg("sigma") = py::none(), py::arg("time") = py::none(),
-           py::arg("kernel") = py::none(), py::arg("normalization") = py::none(), py::arg("progress") = py::none())
+           py::arg("kernel") = py::none(), py::arg("kernel_tolerance") = py::none(), py::arg("m") = py::none(),
+           py::arg("scale_invariant") = py::none(), py::arg("normalization") = py::none(),
+           py::arg("progress") = py::none())
       .def("diffuse", &Heat_diffusion::diffuse, py::arg("field"), py::arg("steps") = py::none(),
            "F^k = A_t^k F^0, as HeatDiffusion.diffuse, per point.")
       .def("operator_matrix", &Heat_diffusion::operator_matrix,
@@ -366,8 +480,12 @@ inline void add_point_set_functions(py::module_& module)
       .def("features", &Heat_diffusion::features, py::arg("field") = py::none(), py::arg("steps") = py::none(),
            py::kw_only(), py::arg("feature_threshold") = py::none(),
            "Features of the diffused field (default: the NS), as HeatDiffusion.features, with point indices.")
+      .def("decompose", &Heat_diffusion::decompose, py::arg("field") = py::none(), py::arg("levels") = py::none(),
+           py::kw_only(), py::arg("steps_per_level") = py::none(),
+           "(bands (levels, n), residual (n,)) of the field (default: the NS), as HeatDiffusion.decompose.")
       .def_property_readonly("number_of_points", &Heat_diffusion::number_of_points)
       .def_property_readonly("time", &Heat_diffusion::time)
+      .def_property_readonly("kernel", &Heat_diffusion::kernel, "'local' or 'spectral'")
       .def_property_readonly("normalization", &Heat_diffusion::normalization, "'balanced' or 'columns'");
   module.def("point_set_normal_signature", &normal_signature, py::arg("P"), py::arg("N") = py::none(), py::kw_only(),
              py::arg("neighbors") = py::none(), py::arg("neighbor_radius") = py::none(),
@@ -383,9 +501,49 @@ inline void add_point_set_functions(py::module_& module)
              py::arg("field") = py::none(), py::arg("steps") = py::none(), py::kw_only(),
              py::arg("feature_threshold") = py::none(), py::arg("neighbors") = py::none(),
              py::arg("neighbor_radius") = py::none(), py::arg("sigma") = py::none(), py::arg("time") = py::none(),
-             py::arg("kernel") = py::none(), py::arg("progress") = py::none(),
+             py::arg("kernel") = py::none(), py::arg("kernel_tolerance") = py::none(), py::arg("m") = py::none(),
+             py::arg("scale_invariant") = py::none(), py::arg("progress") = py::none(),
              ("Features of the diffused field (default: the NS) of the point set P, as\n"
               "PointSetHeatDiffusion.features.\n" + neighbourhood_doc + diffusion_doc)
+                 .c_str());
+  module.def("point_set_decompose", &decompose, py::arg("P"), py::arg("N") = py::none(),
+             py::arg("field") = py::none(), py::arg("levels") = py::none(), py::kw_only(),
+             py::arg("steps_per_level") = py::none(), py::arg("neighbors") = py::none(),
+             py::arg("neighbor_radius") = py::none(), py::arg("sigma") = py::none(), py::arg("time") = py::none(),
+             py::arg("kernel") = py::none(), py::arg("kernel_tolerance") = py::none(), py::arg("m") = py::none(),
+             py::arg("scale_invariant") = py::none(), py::arg("progress") = py::none(),
+             ("(bands (levels, n), residual (n,)) of the field (default: the NS) of the point set P, as\n"
+              "decompose (decompose_point_set_field()); synthesize() re-weights them.\n" + neighbourhood_doc +
+              diffusion_doc)
+                 .c_str());
+  module.def("point_set_filter_shape", &filter_shape, py::arg("P"), py::arg("N") = py::none(), py::kw_only(),
+             py::arg("weights"), py::arg("steps_per_level") = py::none(), py::arg("anchor_weight") = py::none(),
+             py::arg("neighbors") = py::none(), py::arg("neighbor_radius") = py::none(),
+             py::arg("sigma") = py::none(), py::arg("time") = py::none(), py::arg("kernel") = py::none(),
+             py::arg("kernel_tolerance") = py::none(), py::arg("m") = py::none(),
+             py::arg("scale_invariant") = py::none(), py::arg("progress") = py::none(),
+             ("New positions (n, 3) of the point set P, moved along their normals (filter_point_set_shape()):\n"
+              "the NS bands reweighted by weights (one per band, finest first; the paper's smoothing filter\n"
+              "is [0, 0, 1], its enhancement filter [1, 3, 3]), as filter_shape; steps_per_level (default " +
+              std::to_string(D::shape_filter_steps_per_level) + ") and anchor_weight (default " +
+              number_text(D::shape_filter_anchor_weight) + ").\n" + neighbourhood_doc + diffusion_doc)
+                 .c_str());
+  module.def("point_set_denoise", &denoise, py::arg("P"), py::arg("N") = py::none(), py::kw_only(),
+             py::arg("neighbors") = py::none(), py::arg("neighbor_radius") = py::none(),
+             py::arg("number_of_iterations") = py::none(), py::arg("number_of_steps") = py::none(),
+             py::arg("normal_sigma") = py::none(), py::arg("displacement_limit") = py::none(),
+             py::arg("progress") = py::none(),
+             ("(positions (n, 3), normals (n, 3) or None) of the point set P denoised by denoise_point_set():\n"
+              "the normals filtered on the neighbours, each point moved along its own normal only, until\n"
+              "the points have moved by the estimated noise level. normals: the filtered unit normals where N\n"
+              "is given, None where they were estimated. neighbors: default " +
+              std::to_string(D::point_set_denoising::number_of_neighbors) +
+              " (the planes fitted to the neighbours\naverage over a few noise deviations); every other keyword "
+              "None is denoise_point_set()'s default:\nat most " + std::to_string(D::point_set_denoising::iterations) +
+              " iterations, " + std::to_string(D::point_set_denoising::number_of_steps) +
+              " filtering step each, the width of the normal weights from the noise,\ndisplacement_limit " +
+              number_text(D::point_set_denoising::displacement_limit) + ". P, N, neighbor_radius, progress and the "
+              "errors as for\npoint_set_normal_signature.\n")
                  .c_str());
 }
 

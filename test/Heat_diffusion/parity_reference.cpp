@@ -27,6 +27,11 @@
 //   points_coordinates  the NCC (n x 3), then the normals they were measured against (n x 3)
 //   points_diffuse      F^k of the NS for each k of the feature scales (or of "steps")
 //   points_features     as features
+//   points_decompose    as decompose (decompose_point_set_field())
+//   points_enhance      the points of filter_point_set_shape() with the enhancement weights (n x 3)
+//   points_denoise      the points of denoise_point_set() (n x 3), then, where the file has
+//                       normals, the filtered normals (n x 3); k is
+//                       defaults::point_set_denoising::number_of_neighbors unless given
 // Each subcommand takes the parameters that its tool command passes on; the steps lists,
 // the levels and the weights, which the library takes as arguments, are the front ends'
 // defaults (defaults::feature_scales, detail_levels, enhancement_weights) unless given.
@@ -45,6 +50,8 @@
 #include <CGAL/Heat_diffusion/normal_controlled_coordinates.h>
 #include <CGAL/Heat_diffusion/parameter_defaults.h>
 #include <CGAL/Heat_diffusion/point_set_anisotropic_heat_diffusion.h>
+#include <CGAL/Heat_diffusion/point_set_decomposition.h>
+#include <CGAL/Heat_diffusion/point_set_denoising.h>
 #include <CGAL/Heat_diffusion/point_set_multiscale_features.h>
 #include <CGAL/Heat_diffusion/point_set_normal_controlled_coordinates.h>
 #include <CGAL/Heat_diffusion/reconstruction.h>
@@ -422,9 +429,117 @@ void run_on_points(const std::string& command, const Point_set& points, unsigned
     throw std::invalid_argument("unknown command " + command);
 }
 
+// The positions of the points, then their normals if `with_normals` and they have some.
+void add_points(const Point_set& points, bool with_normals, Output& out)
+{
+  for(Point_set::Index i : points)
+    for(int c = 0; c < 3; ++c)
+      out.add(points.point(i)[c]);
+  if(with_normals && points.has_normal_map())
+    for(Point_set::Index i : points)
+      for(int c = 0; c < 3; ++c)
+        out.add(points.normal(i)[c]);
+}
+
+template <typename NP>
+void decompose_points(const Point_set& points, unsigned int k, std::size_t levels, const NP& np, Output& out)
+{
+  const HD::Point_set_anisotropic_heat_diffusion<Point_set> diffusion(points, k, np);
+  Eigen::VectorXd ns(static_cast<Eigen::Index>(points.size()));
+  for(std::size_t i = 0; i < points.size(); ++i)
+    ns[Eigen::Index(i)] = diffusion.normal_controlled_coordinates().normal_signature(i);
+  for(const Eigen::VectorXd& band : HD::decompose_point_set_field(diffusion, ns, levels, np))
+    out.values.insert(out.values.end(), band.data(), band.data() + band.size());
+}
+
+template <typename NP>
+void enhance_points(Point_set points, unsigned int k, const std::vector<double>& weights, const NP& np, Output& out)
+{
+  HD::filter_point_set_shape(points, k, weights, np);
+  add_points(points, false, out);
+}
+
+template <typename NP>
+void denoise_points(Point_set points, unsigned int k, const NP& np, Output& out)
+{
+  HD::denoise_point_set(points, k, np);
+  add_points(points, true, out);
+}
+
+// points_decompose, points_enhance and points_denoise, with no named parameter or with the
+// one given.
+bool run_point_application(const std::string& command, const Point_set& points, const std::string& parameter,
+                           const std::string& value, Output& out)
+{
+  namespace P = HD::parameters;
+  namespace D = HD::defaults;
+  const unsigned int k = parameter == "k" ? unsigned(std::stoul(value))
+                         : command == "points_denoise" ? D::point_set_denoising::number_of_neighbors
+                                                      : D::number_of_neighbors;
+  const bool plain = parameter.empty() || parameter == "k";
+  if(command == "points_decompose")
+  {
+    const std::size_t levels = parameter == "levels" ? std::size_t(std::stoul(value)) : D::detail_levels;
+    if(plain || parameter == "levels")
+      decompose_points(points, k, levels, P::default_values(), out);
+    else if(parameter == "steps_per_level")
+      decompose_points(points, k, levels, P::steps_per_level(std::size_t(std::stoul(value))), out);
+    else if(parameter == "neighbor_radius")
+      decompose_points(points, k, levels, CGAL::parameters::neighbor_radius(std::stod(value)), out);
+    else
+      return with_diffusion_parameter(parameter, value,
+                                      [&](const auto& np) { decompose_points(points, k, levels, np, out); });
+  }
+  else if(command == "points_enhance")
+  {
+    std::vector<double> weights(D::enhancement_weights.begin(), D::enhancement_weights.end());
+    if(parameter == "weights")
+    {
+      weights.clear();
+      for(std::size_t w : numbers(value))
+        weights.push_back(double(w));
+    }
+    if(plain || parameter == "weights")
+      enhance_points(points, k, weights, P::default_values(), out);
+    else if(parameter == "steps_per_level")
+      enhance_points(points, k, weights, P::steps_per_level(std::size_t(std::stoul(value))), out);
+    else if(parameter == "anchor_weight")
+      enhance_points(points, k, weights, P::anchor_weight(std::stod(value)), out);
+    else
+      return with_diffusion_parameter(parameter, value,
+                                      [&](const auto& np) { enhance_points(points, k, weights, np, out); });
+  }
+  else if(command == "points_denoise")
+  {
+    if(plain)
+      denoise_points(points, k, P::default_values(), out);
+    else if(parameter == "neighbor_radius")
+      denoise_points(points, k, CGAL::parameters::neighbor_radius(std::stod(value)), out);
+    else if(parameter == "number_of_iterations")
+      denoise_points(points, k, CGAL::parameters::number_of_iterations(unsigned(std::stoul(value))), out);
+    else if(parameter == "number_of_steps")
+      denoise_points(points, k, P::number_of_steps(std::size_t(std::stoul(value))), out);
+    else if(parameter == "normal_sigma")
+      denoise_points(points, k, P::normal_sigma(std::stod(value)), out);
+    else if(parameter == "displacement_limit")
+      denoise_points(points, k, P::displacement_limit(std::stod(value)), out);
+    else
+      return false;
+  }
+  else
+    throw std::invalid_argument("unknown command " + command);
+  return true;
+}
+
 void run_on_points(const std::string& command, const Point_set& points, const std::string& parameter,
                    const std::string& value, Output& out)
 {
+  if(command == "points_decompose" || command == "points_enhance" || command == "points_denoise")
+  {
+    if(!run_point_application(command, points, parameter, value, out))
+      throw std::invalid_argument(command + ": unknown parameter " + parameter + " " + value);
+    return;
+  }
   namespace P = HD::parameters;
   namespace D = HD::defaults;
   std::vector<std::size_t> steps(D::feature_scales.begin(), D::feature_scales.end());

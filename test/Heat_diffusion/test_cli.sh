@@ -288,9 +288,9 @@ out=$(HEAT_DIFFUSION_PROGRESS=always "$tool" features "$data/elephant.off" -m 20
 out=$("$tool" diffuse "$data/elephant.off" -m 20 -k 0,20 -o prog 2>&1 >/dev/null)
 grep -q '\[#' <<<"$out" && fail "progress bar without a terminal: $out" || pass
 
-# Point sets (files without faces): ncc, diffuse and features run on them and write PLY
-# points with the fields and the normals; the JSON says so and gives k; the other
-# subcommands refuse them; options of meshes only are usage errors there.
+# Point sets (files without faces): every subcommand but hks runs on them and writes PLY
+# points with the fields and the normals; the JSON says so and gives k; hks
+# refuses them; options of meshes only are usage errors there.
 expect 0 '"input_kind": "points".*"neighbors": 8, "normals": "file"' -- \
   "$tool" ncc "$points/kitten.xyz" -o kitten_ns.ply --json --quiet
 if python3 -c '
@@ -335,10 +335,32 @@ assert all(abs(math.hypot(r[5], r[6], r[7]) - 1) < 1e-12 for r in rows)
 first = open("'"$points"'/hippo1.ply", "rb").read()
 start = first.index(b"end_header\n") + len(b"end_header\n")
 assert struct.unpack_from("<3d", first, start) == rows[0][:3]'; then pass; else fail "features on points: PLY output"; fi
-for c in hks decompose enhance denoise; do
-  expect 1 "kitten.xyz: this file holds points and no faces: '$c' needs a triangle mesh \(ncc, diffuse and features" -- \
-    "$tool" "$c" "$points/kitten.xyz" -o refused.off
-done
+expect 1 "kitten.xyz: this file holds points and no faces: 'hks' needs a triangle mesh \(ncc, diffuse, features, decompose, enhance and denoise" -- \
+  "$tool" hks "$points/kitten.xyz" -o refused.off
+# decompose, enhance and denoise on points: PLY points, the JSON of the library's choices
+"$tool" decompose "$points/oni.pwn" --levels 2 -o oni_bands --json --quiet > oni_bands.json
+if python3 -c '
+import json; d = json.load(open("oni_bands.json"))
+assert d["input_kind"] == "points" and d["levels"] == 2 and d["steps_per_level"] == 5, d
+assert set(d["outputs"]) == {"1", "2", "residual"} and all(abs(b["relative_sum"]) < 1e-12 for b in d["bands"].values()), d
+assert abs(d["residual_heat"] - d["total_heat"]) <= 1e-10 * max(1.0, abs(d["total_heat"])), d'; then pass; else fail "decompose on points: JSON"; fi
+for f in oni_bands_band1.ply oni_bands_band2.ply oni_bands_residual.ply; do [ -s $f ] && pass || fail "$f missing"; done
+expect 0 '"input_kind": "points".*"weights": \[0, 0, 1\]' -- \
+  "$tool" enhance "$points/oni.pwn" --weights 0,0,1 -o oni_smooth.ply --json --quiet
+"$tool" denoise "$points/kitten.xyz" -o kitten_denoised.ply --json --quiet > kitten_denoised.json
+if python3 -c '
+import json; d = json.load(open("kitten_denoised.json"))
+assert d["input_kind"] == "points" and d["neighbors"] == 24 and d["normals"] == "file" and d["given"] == [], d
+assert d["denoiser"]["iterations"] >= 1 and d["denoiser"]["noise_level"] > 0, d
+header = open("kitten_denoised.ply", "rb").read(600).split(b"end_header")[0].decode()
+assert "element vertex 5210" in header and "property double nx" in header and "element face" not in header, header'
+then pass; else fail "denoise on points: JSON / PLY"; fi
+expect 0 '"neighbors": 12' -- "$tool" denoise "$points/kitten.xyz" --neighbors 12 -o k12d.ply --json --quiet
+expect 2 'the output kitten_d.off of a point set must end in .ply' -- "$tool" denoise "$points/kitten.xyz" -o kitten_d.off
+expect 2 'the output kitten_e.stl of a point set must end in .ply' -- "$tool" enhance "$points/kitten.xyz" -o kitten_e.stl
+expect 2 'on a point set the denoiser is normal filtering' -- \
+  "$tool" denoise "$points/kitten.xyz" --method signature_diffusion
+expect 2 '--sigma applies to --method signature_diffusion only' -- "$tool" denoise "$points/kitten.xyz" --sigma 1
 expect 1 'b9.ply: .*could not orient' -- "$tool" ncc "$data/b9.ply" -o b9_ns.ply
 expect 1 'cube.xyz: CGAL::Heat_diffusion: the point set has 8 points, fewer than k \+ 1 = 9' -- "$tool" ncc "$points/cube.xyz" -o c.ply
 expect 2 "--neighbors must be at least 2" -- "$tool" ncc "$points/kitten.xyz" --neighbors 1
@@ -347,8 +369,9 @@ expect 2 "--neighbor-radius must be a number > 0" -- "$tool" diffuse "$points/ki
 expect 1 'kitten.xyz: CGAL::Heat_diffusion: point 14 has 1 neighbour\(s\) within --neighbor-radius; a fan needs 2' -- \
   "$tool" ncc "$points/kitten.xyz" --neighbor-radius 0.02 -o kr2.ply
 expect 2 '--neighbors concerns point sets: .*fandisk.off is read as a mesh' -- "$tool" ncc "$data/fandisk.off" --neighbors 8
-expect 2 'on a point set the diffusion has the local kernel only' -- "$tool" diffuse "$points/kitten.xyz" -m 20
-expect 2 'on a point set the diffusion has the local kernel only' -- "$tool" features "$points/kitten.xyz" --kernel spectral
+# the spectral kernel on points: the points' own eigenpairs, no coarse level
+expect 0 '"kernel": "spectral".*"eigenpairs": 20' -- "$tool" diffuse "$points/oni.pwn" -m 20 -k 5 -o oni_m20 --json --quiet
+expect 2 '--coarse simplifies a mesh: on a point set' -- "$tool" features "$points/kitten.xyz" --kernel spectral --coarse 500
 expect 2 '--normals is the vertex normal rule of a mesh' -- "$tool" ncc "$points/kitten.xyz" --normals pmp
 cp "$points/kitten.xyz" mine.xyz
 expect 1 'refusing to overwrite the input' -- "$tool" ncc mine.xyz -o ./mine.xyz

@@ -318,6 +318,29 @@ void check_kernels_and_input()
     with_normals.normal(*(with_normals.begin() + 5)) = Vector(0, 0, 0);
     CHECK_THROWS(HD::denoise_point_set(with_normals, 16), std::invalid_argument, "point 5 has a null or non-finite normal");
   }
+  {
+    // 40 points on a line, with or without normals: no plane fits their neighbourhoods
+    std::vector<Point> line;
+    for(int i = 0; i < 40; ++i)
+      line.push_back(Point(i, 2 * i, 0));
+    CHECK_THROWS(HD::denoise_point_set(line, 16), std::invalid_argument, "has a degenerate neighbourhood");
+    Point_set line_with_normals;
+    line_with_normals.add_normal_map();
+    for(const Point& p : line)
+      line_with_normals.insert(p, Vector(0, 0, 1));
+    CHECK_THROWS(HD::denoise_point_set(line_with_normals, 16), std::invalid_argument,
+                 "point 0 has a degenerate neighbourhood: it and its 16 neighbours lie on a line");
+  }
+  {
+    // normals that lie in the surface: a 10 x 10 grid on z = x y / 100 with normals along x
+    Point_set tangent;
+    tangent.add_normal_map();
+    for(int x = 0; x < 10; ++x)
+      for(int y = 0; y < 10; ++y)
+        tangent.insert(Point(x + 0.01 * (y % 3), y, x * y / 100.), Vector(1, 0, 0));
+    CHECK_THROWS(HD::denoise_point_set(tangent, 16), std::invalid_argument,
+                 "the normals are not those of the points' surface: the median angle");
+  }
   CHECK(points == samples);
 }
 

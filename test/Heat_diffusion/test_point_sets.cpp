@@ -8,6 +8,7 @@
 #include <CGAL/Heat_diffusion/normal_controlled_coordinates.h>
 #include <CGAL/Heat_diffusion/multiscale_features.h>
 #include <CGAL/Heat_diffusion/point_set_anisotropic_heat_diffusion.h>
+#include <CGAL/Heat_diffusion/point_set_decomposition.h>
 #include <CGAL/Heat_diffusion/point_set_multiscale_features.h>
 #include <CGAL/Heat_diffusion/point_set_normal_controlled_coordinates.h>
 
@@ -18,6 +19,7 @@
 #include <CGAL/Surface_mesh.h>
 #include <CGAL/compute_average_spacing.h>
 
+#include "mesh_vertices_as_points.h"
 #include "test_support.h"
 
 #include <Eigen/SparseCholesky>
@@ -237,6 +239,73 @@ void check_operators_and_diffusion(const std::string& name, unsigned int k)
         HD::Anisotropic_heat_diffusion<Mesh>::maximum_region_size);
 }
 
+// Several components: fandisk and elephant, 10 units apart, as one point set with the
+// meshes' normals. Each point's fan and NS are those it has in its component alone, A_t
+// joins no two components and keeps the heat of each; unit shape-filter weights move no
+// point. Without normals the orientation cannot cross from one component to the other:
+// refused, with advice.
+void check_several_components()
+{
+  Mesh fandisk = test_support::load<Mesh>("fandisk.off");
+  Mesh elephant = test_support::load<Mesh>("elephant.off");
+  for(Vertex v : elephant.vertices())
+    elephant.point(v) = elephant.point(v) + Vector(10., 0., 0.);
+  const Point_set first = test_support::mesh_vertices_as_points(fandisk, HD::Normal_controlled_coordinates<Mesh>(fandisk));
+  const Point_set second =
+      test_support::mesh_vertices_as_points(elephant, HD::Normal_controlled_coordinates<Mesh>(elephant));
+  Point_set both = first;
+  for(Point_set::Index i : second)
+    both.insert(second.point(i), second.normal(i));
+  const std::size_t n1 = first.size(), n = both.size();
+  const HD::Point_set_normal_controlled_coordinates<Point_set> ncc1(first, 8), ncc2(second, 8), ncc(both, 8);
+  double largest = 0;
+  for(std::size_t i = 0; i < n; ++i)
+    largest = (std::max)(largest, std::abs(ncc.normal_signature(i)));
+  std::size_t different = 0;
+  double difference = 0;
+  for(std::size_t i = 0; i < n; ++i)
+  {
+    const double alone = i < n1 ? ncc1.normal_signature(i) : ncc2.normal_signature(i - n1);
+    const double d = std::abs(ncc.normal_signature(i) - alone);
+    difference = (std::max)(difference, d);
+    different += d > 1e-9 * largest ? 1 : 0;
+  }
+  // (the fans are triangulated in the frame of the whole set: a few near-cocircular
+  // neighbourhoods may be resolved differently than in a component's own frame)
+  std::cout << "two components as points: " << different << " of " << n
+            << " NS differ from each component's alone by more than 1e-9 of the largest |NS| (at most "
+            << difference << ", largest |NS| " << largest << ")" << std::endl;
+  CHECK(different <= n / 1000);
+
+  const HD::Point_set_anisotropic_heat_diffusion<Point_set> diffusion(both, 8);
+  const Eigen::SparseMatrix<double>& A = diffusion.operator_matrix();
+  std::size_t across = 0;
+  for(Eigen::Index j = 0; j < A.outerSize(); ++j)
+    for(Eigen::SparseMatrix<double>::InnerIterator it(A, j); it; ++it)
+      across += (std::size_t(it.row()) < n1) != (std::size_t(j) < n1) ? 1 : 0;
+  CHECK_MESSAGE(across == 0, across << " entries of A_t join the two components");
+  Eigen::VectorXd ns(static_cast<Eigen::Index>(n));
+  for(std::size_t i = 0; i < n; ++i)
+    ns[Eigen::Index(i)] = ncc.normal_signature(i);
+  const Eigen::VectorXd f = diffusion.diffuse(ns, 20);
+  const Eigen::Index m1 = Eigen::Index(n1), m2 = Eigen::Index(n - n1);
+  CHECK(std::abs(f.head(m1).sum() - ns.head(m1).sum()) <= 1e-12 * ns.cwiseAbs().sum());
+  CHECK(std::abs(f.tail(m2).sum() - ns.tail(m2).sum()) <= 1e-12 * ns.cwiseAbs().sum());
+
+  Point_set kept = both;
+  HD::filter_point_set_shape(kept, 8, std::vector<double>{1., 1., 1.});
+  double moved = 0;
+  for(Point_set::Index i : both)
+    moved = (std::max)(moved, std::sqrt(CGAL::squared_distance(kept.point(i), both.point(i))));
+  CHECK_MESSAGE(moved <= 1e-9 * 20., "unit weights moved a point by " << moved);
+
+  std::vector<Point> without_normals;
+  for(Point_set::Index i : both)
+    without_normals.push_back(both.point(i));
+  CHECK_THROWS(HD::Point_set_normal_controlled_coordinates<std::vector<Point> >(without_normals, 8),
+               std::invalid_argument, "could not orient");
+}
+
 // The features of the NS at k = 0, 10, 40 on the point set against the mesh's: the
 // share of each side's features within two point spacings of a feature of the same kind
 // on the other side.
@@ -370,7 +439,10 @@ void check_bad_input()
   {
     // a field of the wrong size, or not finite
     const HD::Point_set_anisotropic_heat_diffusion<Points> diffusion(grid, 8);
-    CHECK_THROWS(diffusion.diffuse(Eigen::VectorXd::Zero(5), 1), std::invalid_argument, "wrong size");
+    CHECK_THROWS(diffusion.diffuse(Eigen::VectorXd::Zero(5), 1), std::invalid_argument,
+                 "Point_set_anisotropic_heat_diffusion: the field has 5 values for 36 points");
+    CHECK_THROWS(HD::detect_point_set_features(diffusion.normal_controlled_coordinates(), Eigen::VectorXd::Zero(37)),
+                 std::invalid_argument, "detect_point_set_features: the field has 37 values for 36 points");
     Eigen::VectorXd f = Eigen::VectorXd::Zero(36);
     f[9] = std::numeric_limits<double>::infinity();
     CHECK_THROWS(diffusion.diffuse(f, 1), std::invalid_argument, "point 9 is not finite");
@@ -509,6 +581,7 @@ void run()
                      vertex_points(test_support::load<Mesh>("fandisk.off")), 10),
                  std::invalid_argument, "oriented against its neighbours'");
     check_operators_and_diffusion("fandisk.off", 8);
+    check_several_components();
     compare_features_with_mesh("fandisk.off", 8);
     compare_features_with_mesh("armadillo.off", 8);
   }

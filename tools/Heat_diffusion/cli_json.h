@@ -69,6 +69,19 @@ private:
   std::vector<std::pair<std::string, std::string> > members_;
 };
 
+// A list of numbers as a JSON array, each with 17 significant digits (exact doubles).
+inline std::string number_list_json(const std::vector<double>& values)
+{
+  std::string list = "[";
+  for(std::size_t j = 0; j < values.size(); ++j)
+  {
+    std::ostringstream os;
+    os << std::setprecision(17) << values[j];
+    list += (j ? ", " : "") + os.str();
+  }
+  return list + "]";
+}
+
 } // namespace heat_diffusion_cli
 
 #endif // CGAL_HEAT_DIFFUSION_TOOLS_CLI_JSON_H

@@ -140,7 +140,7 @@ struct Command
 };
 
 // The subcommands that run on point sets (Command::point_sets), for the messages.
-const char* const point_set_commands = "ncc, diffuse and features";
+const char* const point_set_commands = "ncc, diffuse, features, decompose, enhance and denoise";
 
 // Runs `command` on the command line argv[2..]: the shared options, --help and the
 // JSON summary here, the rest in command.run.

@@ -7,11 +7,13 @@
 #define CGAL_HEAT_DIFFUSION_TOOLS_COMMAND_DECOMPOSE_H
 
 #include "cli_arguments.h"
+#include "cli_measures.h"
 #include "cli_output.h"
 #include "command.h"
 #include "diffusion_fields.h"
 #include "diffusion_options.h"
 #include "diffusion_setup.h"
+#include "point_set_applications.h"
 
 #include <CGAL/Heat_diffusion/decomposition.h>
 
@@ -61,11 +63,15 @@ inline std::string decompose_help()
   return "Usage: heat_diffusion decompose MESH [--levels L] [-k S] [--sigma S] [--time T]\n"
          "                                [--kernel K] [-m M] [--coarse N] [--field ns|FILE]\n"
          "                                [--scale-invariant] [-o PREFIX] [--json] [--quiet]\n"
+         "       heat_diffusion decompose POINTS [--neighbors K] [--neighbor-radius R] [OPTIONS]\n"
          "\n"
          "Hierarchical decomposition of a field (the paper's eq. 24): S = D^1 + ... + D^L + S^L with\n"
          "D^j = F^((j-1)s) - F^(js) and the residual S^L = F^(Ls), where F^k = A_t^k S is the\n"
          "heat-conserving diffusion and s the steps per level. D^1 holds the finest details.\n"
          "Every band sums to zero (eq. 25), up to rounding.\n"
+         "On POINTS (a file of points without faces, see ncc --help) the diffusion runs on the\n"
+         "surface of the points' fans (no --coarse); the outputs are PLYs of the points with\n"
+         "'field' and the normals (CGAL::Heat_diffusion::decompose_point_set_field).\n"
          "\n"
          "Options:\n" +
          help_option("--levels L", "number of detail bands, 1 to 1000 (default " +
@@ -78,7 +84,7 @@ inline std::string decompose_help()
          help_option("--json", "print a JSON summary on stdout: per band its sum, its sum relative to sum |S|, and "
                                "its L2 norm; the total heat of S and of the residual; the kernel and its coarse "
                                "level; the time of each stage in milliseconds") +
-         common_options_help();
+         neighbourhood_options_help() + common_options_help();
 }
 
 inline Command decompose_command()
@@ -88,6 +94,7 @@ inline Command decompose_command()
   command.overview = "decompose MESH Detail bands and residual of the NS (or a field), each band of sum 0";
   command.valued = {"--levels", "--steps-per-level"};
   command.diffusion = decompose_spec();
+  command.point_sets = true;
   command.help = decompose_help;
   command.run = [](Run& r) {
     const Diffusion_options& o = r.diffusion;
@@ -99,6 +106,8 @@ inline Command decompose_command()
     for(std::size_t j = 1; j <= levels; ++j)
       outputs.push_back(prefix + "_band" + std::to_string(j) + ".ply");
     outputs.push_back(prefix + "_residual.ply");
+    if(r.points)
+      return decompose_on_points(r, levels, steps_per_level, prefix, outputs);
     r.check_outputs(outputs, {o.field});
 
     Mesh mesh;
@@ -136,48 +145,21 @@ inline Command decompose_command()
     files.commit();
     r.timer.stop("write");
 
-    double absolute_sum = 0, total_heat = 0;
-    for(double x : input_values)
-    {
-      absolute_sum += std::abs(x);
-      total_heat += x;
-    }
-    Json_object band_json, names;
-    double worst_relative_sum = 0;
-    for(std::size_t j = 0; j + 1 < values.size(); ++j)
-    {
-      double sum = 0, squares = 0;
-      for(double x : values[j])
-      {
-        sum += x;
-        squares += x * x;
-      }
-      const double relative = absolute_sum > 0 ? std::abs(sum) / absolute_sum : 0.;
-      worst_relative_sum = (std::max)(worst_relative_sum, relative);
-      Json_object b;
-      b.number("sum", sum).number("relative_sum", relative).number("l2_norm", std::sqrt(squares));
-      band_json.object(std::to_string(j + 1), b);
-      names.string(std::to_string(j + 1), outputs[j]);
-    }
-    names.string("residual", outputs.back());
-    double residual_heat = 0;
-    for(double x : values.back())
-      residual_heat += x;
-
+    const Band_summary summary = band_summary(input_values, values, outputs);
     note_automatic_coarse(o, mesh.number_of_vertices(), setup.kernel ? setup.kernel->coarse_vertex_count() : 0);
     warn_about_collapsed_regions(diffusion, o);
     if(!r.quiet)
       std::cerr << levels << " bands of " << steps_used << " steps; largest |band sum| / sum |S| = "
-                << worst_relative_sum << "\nwritten to " << prefix << "_band*.ply and " << outputs.back() << "\n";
-    r.summary.string("field", o.field).object("outputs", names).integer("vertices", (long long)mesh.number_of_vertices());
+                << summary.worst_relative_sum << "\nwritten to " << prefix << "_band*.ply and " << outputs.back() << "\n";
+    r.summary.string("field", o.field)
+        .object("outputs", summary.names)
+        .integer("vertices", (long long)mesh.number_of_vertices());
     add_diffusion_json(r.summary, o, mesh.number_of_vertices(), setup.kernel.get(), &diffusion,
                        steps_per_level ? std::vector<std::string>{"steps_per_level"} : std::vector<std::string>{});
     r.summary.integer("levels", (long long)levels)
         .integer("steps_per_level", (long long)steps_used)
-        .object("heat_regions", heat_region_json(diffusion.region_statistics()))
-        .number("total_heat", total_heat)
-        .number("residual_heat", residual_heat)
-        .object("bands", band_json);
+        .object("heat_regions", heat_region_json(diffusion.region_statistics()));
+    summary.add_to(r.summary);
   };
   return command;
 }

@@ -13,6 +13,7 @@
 #include "command.h"
 #include "diffusion_options.h"
 #include "diffusion_setup.h"
+#include "point_set_applications.h"
 
 #include <CGAL/Heat_diffusion/denoising.h>
 
@@ -65,6 +66,8 @@ inline std::string denoise_help()
          "                              [--iterations N] [-k K] [--normal-sigma S] [--displacement-limit D]\n"
          "                              [--sigma S] [--time T] [--kernel K] [--normalization N] [-m M]\n"
          "                              [--coarse N] [--anchor-weight W] [--json] [--quiet]\n"
+         "       heat_diffusion denoise POINTS [-o OUT.ply] [--iterations N] [-k K] [--normal-sigma S]\n"
+         "                              [--displacement-limit D] [--neighbors K] [--neighbor-radius R]\n"
          "\n"
          "Denoises a triangle mesh, keeping its connectivity (CGAL::Heat_diffusion::denoise_mesh).\n"
          "normal_filtering (default): the face normals are diffused with the edge weights of the\n"
@@ -79,6 +82,13 @@ inline std::string denoise_help()
          "signature_diffusion: the paper's pipeline (eq. 22-23): each iteration diffuses the Normal\n"
          "Signature with the edge-weighted heat kernel, updates the normals and reconstructs the\n"
          "vertices from the diffused signature in the least-squares sense.\n"
+         "On POINTS (a file of points without faces, see ncc --help): normal filtering on the\n"
+         "points' neighbours (CGAL::Heat_diffusion::denoise_point_set, " +
+         std::to_string(HD::defaults::point_set_denoising::number_of_neighbors) +
+         " neighbours unless --neighbors),\n"
+         "each point moved along its own normal only, until the points have moved by the\n"
+         "estimated noise level; the output is a PLY of the points, with their filtered normals\n"
+         "if the file has normals.\n"
          "\n"
          "Options:\n" +
          help_option("--method M", "normal_filtering (default) or signature_diffusion") +
@@ -97,12 +107,15 @@ inline std::string denoise_help()
          help_option("--anchor-weight W", "signature diffusion: weight that holds vertices at their current "
                                           "positions (default " + format_number(D::anchor_weight) + ")") +
          help_option("-o OUT", "the denoised mesh, .off, .obj, .ply or .stl (default: NOISY's name with "
-                               "_denoised.off, in the current folder); never the input") +
+                               "_denoised.off, in the current folder); for POINTS a .ply (default: "
+                               "_denoised.ply); never the input") +
          help_option("--json", "print a JSON summary on stdout: the parameters given, what the denoiser chose "
                                "(the noise level it estimated, in mean edge lengths, its iterations, the stage "
                                "whose result it returned, the kernel of signature diffusion), the mean and "
                                "largest vertex displacement (in mean edge lengths) and the time of each stage in "
                                "milliseconds") +
+         neighbourhood_options_help(HD::defaults::point_set_denoising::number_of_neighbors,
+                                    "to whose planes it is fitted and whose normals filter its own") +
          common_options_help();
 }
 
@@ -132,6 +145,7 @@ inline Command denoise_command()
   command.valued = {"--iterations", "--anchor-weight", "--method", "--normal-sigma", "--displacement-limit"};
   command.diffusion = denoise_spec();
   command.adapt_diffusion = adapt_denoise_spec;
+  command.point_sets = true;
   command.help = denoise_help;
   command.run = [](Run& r) {
     const Diffusion_options& o = r.diffusion;
@@ -162,7 +176,10 @@ inline Command denoise_command()
     const std::optional<double> anchor_weight = optional_number("--anchor-weight", "anchor_weight");
     const std::optional<double> displacement_limit = optional_number("--displacement-limit", "displacement_limit");
     const std::optional<double> normal_sigma = optional_number("--normal-sigma", "normal_sigma");
-    const std::string output = r.args.value("-o", default_output(r.input, "_denoised.off"));
+    const std::string output =
+        r.args.value("-o", default_output(r.input, r.points ? "_denoised.ply" : "_denoised.off"));
+    if(r.points)
+      return denoise_on_points(r, {iterations, o.step_count, normal_sigma, displacement_limit, given}, output);
     mesh_format(output);
     r.check_outputs({output});
 

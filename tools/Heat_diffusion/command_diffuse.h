@@ -43,8 +43,9 @@ inline std::string diffuse_help()
          "region. The total heat sum_i F^k(i) is conserved exactly.\n"
          "\n"
          "On POINTS (a file of points without faces, see ncc --help) the diffusion runs on the\n"
-         "surface of the points' fans, with the local kernel; the outputs are PLYs of the points\n"
-         "with 'field' and the normals, and there is no global baseline.\n"
+         "surface of the points' fans, with either kernel (the spectral one without --coarse: its\n"
+         "eigenpairs are the points' own); the outputs are PLYs of the points with 'field' and the\n"
+         "normals, and there is no global baseline.\n"
          "\n"
          "Options:\n" +
          diffusion_options_help(diffuse_spec()) +

@@ -14,6 +14,7 @@
 #include "command_decompose.h"  // level_spec, parse_steps_per_level
 #include "diffusion_options.h"
 #include "diffusion_setup.h"
+#include "point_set_applications.h"
 
 #include <CGAL/Heat_diffusion/decomposition.h>
 #include <CGAL/Heat_diffusion/normal_controlled_coordinates.h>
@@ -22,7 +23,6 @@
 
 #include <array>
 #include <cmath>
-#include <iomanip>
 #include <iostream>
 #include <sstream>
 #include <string>
@@ -83,12 +83,16 @@ inline std::string enhance_help()
   return "Usage: heat_diffusion enhance MESH [--weights W1,W2,...] [-k S] [--sigma S] [--time T]\n"
          "                              [--kernel K] [-m M] [--coarse N] [--scale-invariant]\n"
          "                              [--anchor-weight A] [-o OUT] [--json] [--quiet]\n"
+         "       heat_diffusion enhance POINTS [--neighbors K] [--neighbor-radius R] [OPTIONS]\n"
          "\n"
          "Shape editing (the paper's Fig. 10): the Normal Signature is decomposed into L detail\n"
          "bands D^1..D^L (finest first) and a residual S^L, as 'decompose' does; the signature\n"
          "w_1 D^1 + ... + w_L D^L + S^L is rebuilt with the given weights, and the vertices are\n"
          "moved to match it (least-squares reconstruction, eq. 23). The paper's enhancement filter\n"
          "is 1,3,3, its smoothing filter 0,0,1; weights all 1 return the input.\n"
+         "On POINTS (a file of points without faces, see ncc --help) the points move along their\n"
+         "normals on the surface of their fans (CGAL::Heat_diffusion::filter_point_set_shape, no\n"
+         "--coarse); the output is a PLY of the points, with the file's normals if it has some.\n"
          "\n"
          "Options:\n" +
          help_option("--weights W,...", "one weight per band, finest first; their number is L (default " +
@@ -98,11 +102,11 @@ inline std::string enhance_help()
                                               format_number(HD::defaults::shape_filter_anchor_weight) +
                                               "); smaller lets the shape move further") +
          help_option("-o OUT", "the edited mesh, .off, .obj, .ply or .stl (default: MESH's name with _enhanced.off, "
-                               "in the current folder)") +
+                               "in the current folder); for POINTS a .ply (default: _enhanced.ply)") +
          help_option("--json", "print a JSON summary on stdout: the variance of the NS before and after, the largest "
                                "vertex displacement relative to the bounding-box diagonal, the kernel and its coarse "
                                "level, and the time of each stage") +
-         common_options_help();
+         neighbourhood_options_help() + common_options_help();
 }
 
 inline Command enhance_command()
@@ -112,6 +116,7 @@ inline Command enhance_command()
   command.overview = "enhance MESH   Shape editing: reweighted NS detail bands, e.g. --weights 1,3,3";
   command.valued = {"--weights", "--steps-per-level", "--anchor-weight"};
   command.diffusion = enhance_spec();
+  command.point_sets = true;
   command.help = enhance_help;
   command.run = [](Run& r) {
     const Diffusion_options& o = r.diffusion;
@@ -122,7 +127,10 @@ inline Command enhance_command()
         r.args.has("--anchor-weight")
             ? std::optional<double>(parse_number("--anchor-weight", r.args.value("--anchor-weight", ""), 0., true))
             : std::nullopt;
-    const std::string output = r.args.value("-o", default_output(r.input, "_enhanced.off"));
+    const std::string output =
+        r.args.value("-o", default_output(r.input, r.points ? "_enhanced.ply" : "_enhanced.off"));
+    if(r.points)
+      return enhance_on_points(r, weights, steps_per_level, anchor_weight, output);
     mesh_format(output);
     r.check_outputs({output});
 
@@ -158,16 +166,9 @@ inline Command enhance_command()
     if(!r.quiet)
       std::cerr << "NS variance " << input_variance << " -> " << output_variance << "; largest displacement "
                 << relative_displacement << " of the diagonal\nwritten to " << output << "\n";
-    std::string weight_list = "[";
-    for(std::size_t j = 0; j < weights.size(); ++j)
-    {
-      std::ostringstream os;
-      os << std::setprecision(17) << weights[j];
-      weight_list += (j ? ", " : "") + os.str();
-    }
     r.summary.string("output", output)
         .integer("vertices", (long long)mesh.number_of_vertices())
-        .raw("weights", weight_list + "]")
+        .raw("weights", number_list_json(weights))
         .integer("steps_per_level",
                  (long long)steps_per_level.value_or(HD::defaults::shape_filter_steps_per_level));
     std::vector<std::string> own_given;

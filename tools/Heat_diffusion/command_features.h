@@ -69,8 +69,8 @@ inline std::string features_help()
          "feature if F^k there is above F^k at every other vertex of its 2-ring and above\n"
          "C max F^k, a concave feature if it is below them all and below C min F^k.\n"
          "On POINTS (a file of points without faces, see ncc --help) the 2-ring is taken in the\n"
-         "graph of the points' fans, the diffusion has the local kernel, and the outputs are PLYs\n"
-         "of the points with 'feature', 'field' and the normals.\n"
+         "graph of the points' fans, the diffusion runs on their surface (no --coarse), and the\n"
+         "outputs are PLYs of the points with 'feature', 'field' and the normals.\n"
          "\n"
          "Options:\n" +
          diffusion_options_help(features_spec()) +

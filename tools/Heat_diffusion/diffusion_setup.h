@@ -127,35 +127,40 @@ inline std::string json_string_list(const std::vector<std::string>& names)
   return list + "]";
 }
 
-// The diffusion parameters of a JSON summary, as used: "given", the named parameters
-// the user set (those of the diffusion, then the subcommand's own, `own_given`); sigma,
-// time, the kernel and the normalization read from the diffusion that ran, when there is
-// one (else the values given or the library's defaults, which are then what the library
-// used); for the spectral kernel, the eigenpairs and the coarse level ({"vertex_count":
-// the size used, 0 for none; "automatic": whether the package chose it}), from the
-// kernel, else by the package's own rule.
+// The diffusion parameters of a JSON summary that meshes and point sets share: "given",
+// the named parameters the user set (those of the diffusion, then the subcommand's own,
+// `own_given`), then sigma, time, the kernel and (where the subcommand builds A_t) the
+// normalization, as used.
+inline void add_diffusion_choice_json(Json_object& summary, const Diffusion_options& o,
+                                      const std::vector<std::string>& own_given, double sigma, double time,
+                                      HD::Heat_kernel_method method, HD::Operator_normalization normalization)
+{
+  std::vector<std::string> given = o.given();
+  given.insert(given.end(), own_given.begin(), own_given.end());
+  summary.raw("given", json_string_list(given));
+  summary.number("sigma", sigma).number("time", time);
+  summary.string("kernel", method == HD::Heat_kernel_method::local ? "local" : "spectral");
+  summary.boolean("kernel_automatic", o.automatic_method());
+  if(o.builds_operator)
+    summary.string("normalization", normalization == HD::Operator_normalization::balanced ? "balanced" : "columns");
+}
+
+// The diffusion parameters of a JSON summary, as used (add_diffusion_choice_json()):
+// sigma, time, the kernel and the normalization read from the diffusion that ran, when
+// there is one (else the values given or the library's defaults, which are then what the
+// library used); for the spectral kernel, the eigenpairs and the coarse level
+// ({"vertex_count": the size used, 0 for none; "automatic": whether the package chose
+// it}), from the kernel, else by the package's own rule.
 inline void add_diffusion_json(Json_object& summary, const Diffusion_options& o, std::size_t n,
                                const Heat_kernel* kernel, const Diffusion* diffusion = nullptr,
                                std::vector<std::string> own_given = {}, double sigma_default = HD::defaults::sigma,
                                double time_default = HD::defaults::time)
 {
-  std::vector<std::string> given = o.given();
-  given.insert(given.end(), own_given.begin(), own_given.end());
-  summary.raw("given", json_string_list(given));
-  const double sigma = diffusion ? diffusion->sigma() : kernel ? kernel->sigma() : o.sigma.value_or(sigma_default);
-  const double time = diffusion ? diffusion->time() : o.time.value_or(time_default);
-  summary.number("sigma", sigma).number("time", time);
-  summary.string("kernel", diffusion ? (diffusion->kernel_method() == HD::Heat_kernel_method::local ? "local"
-                                                                                                      : "spectral")
-                                     : o.kernel_name());
-  summary.boolean("kernel_automatic", o.automatic_method());
-  if(o.builds_operator)
-  {
-    const HD::Operator_normalization normalization =
-        diffusion ? diffusion->operator_normalization()
-                  : o.normalization.value_or(HD::Operator_normalization::balanced);
-    summary.string("normalization", normalization == HD::Operator_normalization::balanced ? "balanced" : "columns");
-  }
+  add_diffusion_choice_json(
+      summary, o, own_given,
+      diffusion ? diffusion->sigma() : kernel ? kernel->sigma() : o.sigma.value_or(sigma_default),
+      diffusion ? diffusion->time() : o.time.value_or(time_default), diffusion ? diffusion->kernel_method() : o.method,
+      diffusion ? diffusion->operator_normalization() : o.normalization.value_or(HD::Operator_normalization::balanced));
   if(o.local())
     return;
   Json_object coarse;

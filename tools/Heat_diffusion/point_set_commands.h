@@ -210,16 +210,19 @@ inline std::vector<Eigen::VectorXd> diffuse_point_field(const Run& r, const Poin
   });
 }
 
-// The diffusion parameters and the point set of a JSON summary.
+// The diffusion parameters and the point set of a JSON summary: those of the diffusion
+// that ran, and for the spectral kernel its eigenpairs (no coarse level on points).
 inline void add_point_set_diffusion_json(Run& r, const Point_set& points, const Neighbourhood_options& nb,
                                          const Point_set_diffusion& diffusion, std::vector<std::string> own_given)
 {
   std::vector<std::string> given = nb.given();
   given.insert(given.end(), own_given.begin(), own_given.end());
   r.summary.string("input_kind", "points").integer("points", (long long)points.size());
-  // (sigma and time as the diffusion used them: given, or the library's defaults)
-  add_diffusion_json(r.summary, r.diffusion, points.size(), nullptr, nullptr, given, diffusion.sigma(),
-                     diffusion.time());
+  add_diffusion_choice_json(r.summary, r.diffusion, given, diffusion.sigma(), diffusion.time(),
+                            diffusion.kernel_method(), diffusion.operator_normalization());
+  if(diffusion.kernel_method() == HD::Heat_kernel_method::spectral)
+    r.summary.integer("eigenpairs", (long long)diffusion.eigenvalues().size())
+        .boolean("scale_invariant", r.diffusion.scale_invariant);
   r.summary.object("point_set", point_set_json(points, nb, diffusion.normal_controlled_coordinates()))
       .object("heat_regions", heat_region_json(diffusion.region_statistics()));
 }

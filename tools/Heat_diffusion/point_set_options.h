@@ -1,8 +1,8 @@
 // Copyright (c) 2026 The CGAL Heat_diffusion developers.
 // SPDX-License-Identifier: LGPL-3.0-or-later
 //
-// The options of the subcommands that run on point sets (ncc, diffuse, features): the
-// neighbourhoods of the points' fans, and the refusal of the options that concern
+// The options of the subcommands that run on point sets (all but hks): the
+// neighbourhoods of the points' fans, and the refusal of the option that concerns
 // meshes only.
 
 #ifndef CGAL_HEAT_DIFFUSION_TOOLS_POINT_SET_OPTIONS_H
@@ -34,9 +34,11 @@ struct Neighbourhood_options
 {
   std::optional<unsigned int> k;
   std::optional<double> radius;
+  // The library's default of the subcommand (denoise has its own).
+  unsigned int default_k = HD::defaults::number_of_neighbors;
 
-  // The k passed to the library: the one given, or the front ends' default.
-  unsigned int k_or_default() const { return k.value_or(HD::defaults::number_of_neighbors); }
+  // The k passed to the library: the one given, or the subcommand's default.
+  unsigned int k_or_default() const { return k.value_or(default_k); }
   // The library's names of the options given, for the JSON summary.
   std::vector<std::string> given() const
   {
@@ -77,25 +79,28 @@ auto with_neighbourhood(const Neighbourhood_options& nb, Function&& f)
   return f(HD::parameters::default_values());
 }
 
-// The help of the two options.
-inline std::string neighbourhood_options_help()
+// The help of the two options; `role` says what the neighbours are for, `default_k` is
+// the subcommand's default neighbour count.
+inline std::string neighbourhood_options_help(
+    unsigned int default_k = HD::defaults::number_of_neighbors,
+    const std::string& role = "whose Delaunay triangulation on the tangent plane makes its fan")
 {
-  return help_option("--neighbors K",
-                     "point sets only: the neighbours of each point whose Delaunay triangulation on the tangent plane "
-                     "makes its fan, 2 to 1000 (default " + std::to_string(HD::defaults::number_of_neighbors) +
-                         "); with --neighbor-radius, at most that many of those within the radius (0: all)") +
+  return help_option("--neighbors K", "point sets only: the neighbours of each point " + role +
+                                          ", 2 to 1000 (default " + std::to_string(default_k) +
+                                          "); with --neighbor-radius, at most that many of those within the radius "
+                                          "(0: all)") +
          help_option("--neighbor-radius R",
                      "point sets only: the neighbours within the distance R (in the file's units) instead of the K "
                      "nearest");
 }
 
-// Refuses, on a point set, the options that concern meshes only: the spectral kernel
-// and its eigenpairs (the point-set diffusion has the local kernel only).
+// Refuses, on a point set, the option that concerns meshes only: --coarse (the spectral
+// kernel of a point set has the eigenpairs of the points' own L and B).
 inline void refuse_mesh_only_diffusion_options(const Diffusion_options& o)
 {
-  if(!o.local())
-    throw Usage_error("on a point set the diffusion has the local kernel only: --kernel spectral, -m, --coarse and "
-                      "--scale-invariant need a mesh");
+  if(o.coarse)
+    throw Usage_error("--coarse simplifies a mesh: on a point set the spectral kernel has the eigenpairs of the "
+                      "points' own L and B, without a coarse level");
 }
 
 } // namespace heat_diffusion_cli

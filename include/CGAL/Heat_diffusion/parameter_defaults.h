@@ -91,6 +91,11 @@ inline constexpr double anchor_weight = 0.7;
 
 /// The defaults of `denoise_point_set()`, measured with `benchmark_point_set_denoising`.
 namespace point_set_denoising {
+/// The neighbour count k, which `denoise_point_set()` takes as an argument: the tool and
+/// the Python module use it when the caller gives none. Wider than the fans'
+/// `defaults::number_of_neighbors`: the planes fitted to the neighbours must average
+/// over a few noise deviations (the user manual's section on point-set denoising).
+inline constexpr unsigned int number_of_neighbors = 24;
 /// `number_of_iterations` (the displacement limit usually stops them first).
 inline constexpr unsigned int iterations = 40;
 /// `number_of_steps`: normal filtering steps per iteration.

@@ -17,6 +17,7 @@
 #include <CGAL/Heat_diffusion/internal/local_heat_kernel.h>
 #include <CGAL/Heat_diffusion/internal/point_set_heat_operators.h>
 #include <CGAL/Heat_diffusion/internal/progress.h>
+#include <CGAL/Heat_diffusion/internal/vertex_fields.h>
 #include <CGAL/Heat_diffusion/operator_normalization.h>
 #include <CGAL/Heat_diffusion/parameter_defaults.h>
 #include <CGAL/Heat_diffusion/parameters.h>
@@ -29,7 +30,6 @@
 #include <memory>
 #include <mutex>
 #include <numeric>
-#include <sstream>
 #include <vector>
 
 namespace CGAL {
@@ -208,15 +208,7 @@ public:
   std::vector<Eigen::VectorXd> diffuse(const Eigen::VectorXd& field, const std::vector<std::size_t>& steps,
                                        const NamedParameters& np = parameters::default_values()) const
   {
-    if(field.size() != Eigen::Index(number_of_points()))
-      internal::throw_invalid_input("Point_set_anisotropic_heat_diffusion: the field has the wrong size");
-    for(Eigen::Index i = 0; i < field.size(); ++i)
-      if(!std::isfinite(field[i]))
-      {
-        std::ostringstream os;
-        os << "Point_set_anisotropic_heat_diffusion: the field's value at point " << i << " is not finite";
-        internal::throw_invalid_input(os.str());
-      }
+    internal::check_point_field(field, number_of_points(), "Point_set_anisotropic_heat_diffusion");
     return internal::diffuse_steps(diffusion_operator_, field, steps, internal::progress_of(np));
   }
 

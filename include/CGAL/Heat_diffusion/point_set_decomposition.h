@@ -11,6 +11,7 @@
 #include <CGAL/Heat_diffusion/internal/detail_bands.h>
 #include <CGAL/Heat_diffusion/internal/errors.h>
 #include <CGAL/Heat_diffusion/internal/ncc_reconstruction.h>
+#include <CGAL/Heat_diffusion/internal/vertex_fields.h>
 #include <CGAL/Heat_diffusion/parameter_defaults.h>
 #include <CGAL/Heat_diffusion/parameters.h>
 #include <CGAL/Heat_diffusion/point_set_anisotropic_heat_diffusion.h>
@@ -29,18 +30,6 @@ namespace CGAL {
 namespace Heat_diffusion {
 
 namespace internal {
-
-inline void check_point_field(const Eigen::VectorXd& field, std::size_t number_of_points, const char* where,
-                              const char* what)
-{
-  if(field.size() != Eigen::Index(number_of_points))
-    throw_invalid_input(std::string(where) + ": the " + what + " has " + std::to_string(field.size()) +
-                        " values for " + std::to_string(number_of_points) + " points");
-  for(Eigen::Index i = 0; i < field.size(); ++i)
-    if(!std::isfinite(field[i]))
-      throw_invalid_input(std::string(where) + ": the " + what + "'s value at point " + std::to_string(i) +
-                          " is not finite");
-}
 
 // The rows of `positions` (in the normalised frame of `surface`) in the units of the points.
 inline Eigen::MatrixXd in_user_frame(const Point_set_surface& surface, Eigen::MatrixXd positions)

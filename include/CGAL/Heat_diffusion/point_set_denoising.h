@@ -22,6 +22,8 @@
 #include <cmath>
 #include <cstddef>
 #include <functional>
+#include <sstream>
+#include <string>
 #include <vector>
 
 namespace CGAL {
@@ -145,7 +147,10 @@ struct Point_set_denoising_report
 ///
 /// \throws std::invalid_argument, naming the point or the parameter, before any point is
 ///   moved: a non-finite coordinate or normal, a null normal, fewer than `k + 1` points,
-///   two points that coincide, a normal that cannot be estimated or oriented (give the
+///   two points that coincide, a point whose neighbourhood lies on a line (it fits no
+///   plane), normals whose median angle to the planes fitted to the neighbourhoods is over
+///   60 degrees (normals that lie in the surface), a normal that cannot be estimated or
+///   oriented (give the
 ///   normals then), `k < 2` without a radius, a radius that is negative or not finite, a
 ///   parameter out of its range.
 /// \throws std::runtime_error if the `progress_callback` cancels.
@@ -188,6 +193,23 @@ Point_set_denoising_report denoise_point_set(PointRange& points, unsigned int k,
   Point_set_denoising_report report;
   if(frame.points.empty() || iterations < 1)
     return report;
+  const internal::Neighbourhood_planes planes =
+      internal::neighbourhood_planes(frame.points, prepared.neighbours, prepared.normals);
+  if(planes.first_collinear < frame.points.size())
+    internal::throw_point_error(planes.first_collinear,
+                                "has a degenerate neighbourhood: it and its " +
+                                    std::to_string(prepared.neighbours[planes.first_collinear].size()) +
+                                    " neighbours lie on a line, to which no plane fits");
+  // Normals that lie in the surface would move the points within it: most normals must
+  // be near those of the planes of the neighbourhoods (creases tilt a few of them only).
+  if(given_normals && planes.median_tilt > 60.)
+  {
+    std::ostringstream os;
+    os << "denoise_point_set: the normals are not those of the points' surface: the median angle between a "
+          "normal and the plane fitted to its point's neighbourhood is "
+       << planes.median_tilt << " degrees (more than 60)";
+    internal::throw_invalid_input(os.str());
+  }
 
   internal::Point_set_filtering_options options;
   options.iterations = std::size_t(iterations);

@@ -8,6 +8,7 @@
 
 #include <CGAL/Heat_diffusion/internal/errors.h>
 #include <CGAL/Heat_diffusion/internal/feature_detection.h>
+#include <CGAL/Heat_diffusion/internal/vertex_fields.h>
 #include <CGAL/Heat_diffusion/multiscale_features.h>
 #include <CGAL/Heat_diffusion/parameter_defaults.h>
 #include <CGAL/Heat_diffusion/parameters.h>
@@ -52,12 +53,7 @@ detect_point_set_features(const Point_set_normal_controlled_coordinates<PointRan
   const char* const where = "detect_point_set_features";
   const double c = internal::checked_feature_threshold(
       internal::parameter_value(np, internal_np::feature_threshold, defaults::feature_threshold), where);
-  if(field.size() != Eigen::Index(ncc.number_of_points()))
-    internal::throw_invalid_input(std::string(where) + ": the field has the wrong size");
-  for(Eigen::Index i = 0; i < field.size(); ++i)
-    if(!std::isfinite(field[i]))
-      internal::throw_invalid_input(std::string(where) + ": the field's value at point " + std::to_string(i) +
-                                    " is not finite");
+  internal::check_point_field(field, ncc.number_of_points(), where);
   Features_at_scale<std::size_t> result;
   internal::detect_features(internal::make_vertex_adjacency(ncc.surface().mesh), field, c, result.convex,
                             result.concave);

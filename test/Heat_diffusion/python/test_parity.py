@@ -115,7 +115,10 @@ def tool_result(tool, command, path, tmp_path, options):
         return np.concatenate([read_ply_vertices(tmp_path / f)["field"] for f in files])
     if command in ("enhance", "denoise"):
         run("-o", "out.ply")
-        return points_of(read_ply_vertices(tmp_path / "out.ply"))
+        ply = read_ply_vertices(tmp_path / "out.ply")
+        if command == "denoise" and "nx" in ply:  # a point set's, with its filtered normals
+            return np.concatenate([points_of(ply), np.column_stack([ply["nx"], ply["ny"], ply["nz"]]).ravel()])
+        return points_of(ply)
     raise AssertionError(command)
 
 
@@ -386,7 +389,8 @@ def test_module_takes_what_numpy_users_pass(noisy_mesh):
 # Point sets: the tool on point files and the module on P (and N) give what the library's
 # point-set classes give on the file read with CGAL::IO::read_point_set().
 POINT_FILES = ["kitten.xyz", "oni.pwn", "half.xyz"]  # normals given (kitten, oni) and estimated (half)
-POINT_COMMANDS = ["points_ncc", "points_diffuse", "points_features"]
+POINT_COMMANDS = ["points_ncc", "points_diffuse", "points_features", "points_decompose", "points_enhance",
+                  "points_denoise"]
 
 
 @pytest.mark.parametrize("name", POINT_FILES)
@@ -407,6 +411,22 @@ POINT_TOOL_OPTIONS = [
     ("points_diffuse", ["-k", "3,7"], "steps", "3,7"),
     ("points_features", ["--c", "0.5"], "feature_threshold", "0.5"),
     ("points_features", ["--neighbors", "12"], "k", "12"),
+    ("points_diffuse", ["--kernel", "spectral"], "kernel_method", "spectral"),
+    ("points_diffuse", ["-m", "40"], "number_of_eigenpairs", "40"),
+    ("points_features", ["--scale-invariant"], "scale_invariant_kernel", "true"),
+    ("points_decompose", ["--levels", "2"], "levels", "2"),
+    ("points_decompose", ["-k", "3"], "steps_per_level", "3"),
+    ("points_decompose", ["--sigma", "0.5"], "sigma", "0.5"),
+    ("points_enhance", ["--weights", "0,0,1"], "weights", "0,0,1"),
+    ("points_enhance", ["--anchor-weight", "0.1"], "anchor_weight", "0.1"),
+    ("points_enhance", ["-k", "3"], "steps_per_level", "3"),
+    ("points_enhance", ["--normalization", "columns"], "operator_normalization", "columns"),
+    ("points_denoise", ["--neighbors", "12"], "k", "12"),
+    ("points_denoise", ["--neighbor-radius", "0.03"], "neighbor_radius", "0.03"),
+    ("points_denoise", ["--iterations", "3"], "number_of_iterations", "3"),
+    ("points_denoise", ["-k", "2"], "number_of_steps", "2"),
+    ("points_denoise", ["--normal-sigma", "0.3"], "normal_sigma", "0.3"),
+    ("points_denoise", ["--displacement-limit", "0.5"], "displacement_limit", "0.5"),
 ]
 
 
@@ -430,6 +450,14 @@ def point_module_result(command, P, N, **keywords):
         return diffusion.diffuse(diffusion.normal_signature(), SCALES)
     if command == "points_features":
         return features_layout(hd.point_set_multiscale_features(P, N, **keywords))
+    if command == "points_decompose":
+        bands, residual = hd.point_set_decompose(P, N, **keywords)
+        return np.concatenate([bands.ravel(), residual])
+    if command == "points_enhance":
+        return hd.point_set_filter_shape(P, N, **{"weights": [1, 3, 3], **keywords})
+    if command == "points_denoise":
+        X, M = hd.point_set_denoise(P, N, **keywords)
+        return np.concatenate([X.ravel()] + ([M.ravel()] if M is not None else []))
     raise AssertionError(command)
 
 
@@ -449,6 +477,22 @@ POINT_MODULE_KEYWORDS = [
     ("points_diffuse", {"normalization": "columns"}, "operator_normalization", "columns"),
     ("points_features", {"feature_threshold": 0.5}, "feature_threshold", "0.5"),
     ("points_features", {"neighbors": 12}, "k", "12"),
+    ("points_diffuse", {"kernel": "spectral"}, "kernel_method", "spectral"),
+    ("points_diffuse", {"m": 40}, "number_of_eigenpairs", "40"),
+    ("points_diffuse", {"kernel_tolerance": 1e-4}, "local_kernel_tolerance", "1e-4"),
+    ("points_features", {"scale_invariant": True}, "scale_invariant_kernel", "true"),
+    ("points_decompose", {"levels": 2}, "levels", "2"),
+    ("points_decompose", {"steps_per_level": 3}, "steps_per_level", "3"),
+    ("points_decompose", {"time": 2}, "time", "2"),
+    ("points_enhance", {"weights": [0, 0, 1]}, "weights", "0,0,1"),
+    ("points_enhance", {"anchor_weight": 0.1}, "anchor_weight", "0.1"),
+    ("points_enhance", {"sigma": 0.5}, "sigma", "0.5"),
+    ("points_denoise", {"neighbors": 12}, "k", "12"),
+    ("points_denoise", {"neighbor_radius": 0.03}, "neighbor_radius", "0.03"),
+    ("points_denoise", {"number_of_iterations": 3}, "number_of_iterations", "3"),
+    ("points_denoise", {"number_of_steps": 2}, "number_of_steps", "2"),
+    ("points_denoise", {"normal_sigma": 0.3}, "normal_sigma", "0.3"),
+    ("points_denoise", {"displacement_limit": 0.5}, "displacement_limit", "0.5"),
 ]
 
 

@@ -78,8 +78,9 @@ BAD_POINT_SETS = {
     "null normal": (P_BUMP, np.where(np.arange(49)[:, None] == 4, 0.0, N_BUMP), {},
                     "point 4 has a null or non-finite normal"),
     "duplicate points": (np.vstack([P_BUMP, P_BUMP[3:4]]), None, {}, "point 3 coincides with point 49"),
-    "fewer points than k + 1": (P_BUMP[:5], None, {}, r"the point set has 5 points, fewer than k \+ 1 = 9"),
-    "collinear points": (np.column_stack([np.arange(20.0), 2 * np.arange(20.0), np.zeros(20)]), None, {},
+    # (k + 1 = 25 for point_set_denoise, whose neighbour count is 24)
+    "fewer points than k + 1": (P_BUMP[:5], None, {}, r"the point set has 5 points, fewer than k \+ 1 = (9|25)"),
+    "collinear points": (np.column_stack([np.arange(40.0), 2 * np.arange(40.0), np.zeros(40)]), None, {},
                          "point 0 .*(degenerate neighbourhood|no usable estimated normal)"),
     "two clusters, no normals": (np.vstack([P_BUMP, P_BUMP + [1000, 0, 0]]), None, {},
                                  r"could not orient .* give oriented normals as N \(n x 3\), or more neighbours "
@@ -92,18 +93,38 @@ BAD_POINT_SETS = {
 }
 
 
+# Every function on point sets, called on P and N with the keywords it needs besides.
+POINT_SET_FUNCTIONS = {
+    "point_set_normal_signature": lambda P, N, **kw: hd.point_set_normal_signature(P, N, **kw),
+    "PointSetHeatDiffusion": lambda P, N, **kw: hd.PointSetHeatDiffusion(P, N, **kw),
+    "point_set_multiscale_features": lambda P, N, **kw: hd.point_set_multiscale_features(P, N, **kw),
+    "point_set_decompose": lambda P, N, **kw: hd.point_set_decompose(P, N, **kw),
+    "point_set_filter_shape": lambda P, N, **kw: hd.point_set_filter_shape(P, N, weights=[0, 0, 1], **kw),
+    "point_set_denoise": lambda P, N, **kw: hd.point_set_denoise(P, N, **kw),
+}
+
+
 @pytest.mark.parametrize("case", list(BAD_POINT_SETS))
-@pytest.mark.parametrize("function", ["point_set_normal_signature", "PointSetHeatDiffusion",
-                                      "point_set_multiscale_features"])
+@pytest.mark.parametrize("function", list(POINT_SET_FUNCTIONS))
 def test_bad_point_sets_raise_value_error(case, function):
     P, N, keywords, message = BAD_POINT_SETS[case]
     with pytest.raises(ValueError, match=message):
-        getattr(hd, function)(P, N, **keywords)
+        POINT_SET_FUNCTIONS[function](P, N, **keywords)
 
 
-def test_point_sets_have_the_local_kernel_only():
-    with pytest.raises(ValueError, match="the module has the local kernel only"):
-        hd.PointSetHeatDiffusion(P_BUMP, N_BUMP, kernel="spectral")
+def test_point_sets_take_both_kernels():
+    spectral = hd.PointSetHeatDiffusion(P_BUMP, N_BUMP, kernel="spectral", m=20)
+    assert spectral.kernel == "spectral" and hd.PointSetHeatDiffusion(P_BUMP, N_BUMP).kernel == "local"
+    assert hd.PointSetHeatDiffusion(P_BUMP, N_BUMP, scale_invariant=True).kernel == "spectral"  # the package's rule
+    ns = spectral.normal_signature()
+    f = spectral.diffuse(ns, 10)
+    assert abs(f.sum() - ns.sum()) <= 1e-12 * np.abs(ns).sum()
+    with pytest.raises(ValueError, match="m, coarse and scale_invariant concern the eigenpairs of the spectral kernel"):
+        hd.PointSetHeatDiffusion(P_BUMP, N_BUMP, kernel="local", m=20)
+    with pytest.raises(ValueError, match="kernel_tolerance concerns the local kernel"):
+        hd.PointSetHeatDiffusion(P_BUMP, N_BUMP, kernel="spectral", kernel_tolerance=1e-3)
+    with pytest.raises(TypeError):  # no coarse level on points: the spectral kernel has the points' own eigenpairs
+        hd.PointSetHeatDiffusion(P_BUMP, N_BUMP, coarse=20)
     with pytest.raises(ValueError, match="normalization must be 'balanced', 'columns' or None"):
         hd.PointSetHeatDiffusion(P_BUMP, N_BUMP, normalization="rows")
     diffusion = hd.PointSetHeatDiffusion(P_BUMP, N_BUMP)
@@ -140,14 +161,61 @@ def test_hostile_point_file(name):
         P, N = arrays_of_point_file(os.path.join(HOSTILE_DIR, name))
     except ValueError as e:  # numpy cannot read it (an incomplete line): no arrays to give
         pytest.skip(f"{name} cannot be read into arrays: {e}")
-    for function in (hd.point_set_normal_signature, hd.PointSetHeatDiffusion, hd.point_set_multiscale_features):
+    for function_name, function in POINT_SET_FUNCTIONS.items():
         try:
             result = function(P, N)
         except ValueError as e:
-            assert str(e), f"{name}: {function.__name__}: ValueError without a message"
+            assert str(e), f"{name}: {function_name}: ValueError without a message"
             continue
-        if isinstance(result, np.ndarray):
-            assert np.all(np.isfinite(result)), f"{name}: non-finite NS"
+        for array in result if isinstance(result, tuple) else [result]:
+            if isinstance(array, np.ndarray):
+                assert np.all(np.isfinite(array)), f"{name}: {function_name}: non-finite values"
         if isinstance(result, hd.PointSetHeatDiffusion):
             f = result.diffuse(result.normal_signature(), [0, 5])
             assert np.all(np.isfinite(f)) and abs(f[1].sum() - f[0].sum()) <= 1e-12 * max(1.0, np.abs(f[0]).sum())
+
+
+def noisy_bump(seed=1, n=15, noise=0.02):
+    """bump() with n x n points moved along their normals by Gaussian noise."""
+    P, N = bump(n)
+    return P + np.random.default_rng(seed).normal(0, noise, len(P))[:, None] * N, N
+
+
+def test_point_set_denoise_moves_points_along_their_normals_only():
+    P, N = noisy_bump()
+    P_copy, N_copy = P.copy(), N.copy()
+    X, M = hd.point_set_denoise(P, N)
+    assert np.array_equal(P, P_copy) and np.array_equal(N, N_copy)  # the caller's arrays are kept
+    assert X.shape == P.shape and M.shape == N.shape and np.all(np.isfinite(X))
+    assert np.allclose(np.linalg.norm(M, axis=1), 1) and np.all(np.sum(M * N, axis=1) > 0.9)
+    moved = X - P
+    assert np.abs(moved).max() > 0  # the noise is there to remove
+    # each displacement is along the point's output normal: its part across it is rounding
+    across = moved - np.sum(moved * M, axis=1)[:, None] * M
+    assert np.linalg.norm(across, axis=1).max() <= 1e-9 * np.linalg.norm(moved, axis=1).max()
+    X_estimated, M_estimated = hd.point_set_denoise(P)  # normals estimated: not returned
+    assert M_estimated is None and X_estimated.shape == P.shape and np.all(np.isfinite(X_estimated))
+    assert np.array_equal(hd.point_set_denoise(P, N, number_of_iterations=0)[0], P)
+
+
+def test_point_set_decompose_and_filter_shape():
+    P, N = noisy_bump(noise=0.005)
+    ns = hd.point_set_normal_signature(P, N)
+    bands, residual = hd.point_set_decompose(P, N, levels=3)
+    assert bands.shape == (3, len(P)) and residual.shape == (len(P),)
+    assert np.allclose(bands.sum(axis=0) + residual, ns, rtol=0, atol=1e-12 * np.abs(ns).max())
+    assert np.all(np.abs(bands.sum(axis=1)) <= 1e-12 * np.abs(ns).sum())  # every band sums to 0 (eq. 25)
+    diffusion = hd.PointSetHeatDiffusion(P, N)
+    same_bands, same_residual = diffusion.decompose(levels=3)
+    assert np.array_equal(same_bands, bands) and np.array_equal(same_residual, residual)
+    assert np.allclose(hd.synthesize(bands, residual, [1, 1, 1]), ns, rtol=0, atol=1e-12 * np.abs(ns).max())
+    diagonal = np.linalg.norm(P.max(axis=0) - P.min(axis=0))
+    # unit weights keep the points; the smoothing filter moves them, along their normals
+    assert np.abs(hd.point_set_filter_shape(P, N, weights=[1, 1, 1]) - P).max() <= 1e-9 * diagonal
+    smoothed = hd.point_set_filter_shape(P, N, weights=[0, 0, 1])
+    assert np.abs(smoothed - P).max() > 1e-4 * diagonal
+    assert np.var(hd.point_set_normal_signature(smoothed, N)) < np.var(ns)
+    with pytest.raises(ValueError, match="weights must have 1 to 1000 values"):
+        hd.point_set_filter_shape(P, N, weights=[])
+    with pytest.raises(ValueError, match="levels must be from 1 to 1000"):
+        hd.point_set_decompose(P, N, levels=0)

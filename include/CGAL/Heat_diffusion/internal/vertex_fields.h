@@ -2,7 +2,7 @@
 // SPDX-License-Identifier: LGPL-3.0-or-later
 //
 // Scalar fields between the user's vertex property maps and the vectors by vertex
-// index that the package computes with.
+// index that the package computes with, and the checks of fields given per point.
 
 #ifndef CGAL_HEAT_DIFFUSION_INTERNAL_VERTEX_FIELDS_H
 #define CGAL_HEAT_DIFFUSION_INTERNAL_VERTEX_FIELDS_H
@@ -81,6 +81,20 @@ void write_vertex_field(const TriangleMesh& tm, const Eigen::VectorXd& values, F
   typedef typename boost::property_traits<FieldMap>::value_type Value;
   for(auto v : vertices(tm))
     put(field, v, Value(values[Eigen::Index(index_of(v))]));
+}
+
+// Throws std::invalid_argument unless `field` has one finite value per point; the
+// message names the caller (`where`), the values (`what`) and the first bad point.
+inline void check_point_field(const Eigen::VectorXd& field, std::size_t number_of_points, const char* where,
+                              const char* what = "field")
+{
+  if(field.size() != Eigen::Index(number_of_points))
+    throw_invalid_input(std::string(where) + ": the " + what + " has " + std::to_string(field.size()) +
+                        " values for " + std::to_string(number_of_points) + " points");
+  for(Eigen::Index i = 0; i < field.size(); ++i)
+    if(!std::isfinite(field[i]))
+      throw_invalid_input(std::string(where) + ": the " + what + "'s value at point " + std::to_string(i) +
+                          " is not finite");
 }
 
 } // namespace internal

@@ -71,6 +71,49 @@ inline std::vector<Eigen::Vector3d> filter_point_normals(const std::vector<std::
 // The normal of the plane fitted to each point and its neighbours (weighted least
 // squares), on the side of `previous`; the weights are the range weights of the normal
 // filter on `previous`, so that a fit near a crease keeps to its own side.
+// The planes of the neighbourhoods (each point with its neighbours) against the normals:
+// the first point whose neighbourhood lies on a line to double precision (n if none),
+// where no plane fits and the filter fits planes; and the median over the points of the
+// unoriented angle, in degrees, between a point's normal and its neighbourhood's plane
+// normal (the direction of least variance), small for normals of the points' surface
+// whatever their noise, and large for normals that lie in it.
+struct Neighbourhood_planes
+{
+  std::size_t first_collinear = 0;
+  double median_tilt = 0;
+};
+
+inline Neighbourhood_planes neighbourhood_planes(const std::vector<Eigen::Vector3d>& p,
+                                                 const std::vector<std::vector<std::size_t> >& neighbours,
+                                                 const std::vector<Eigen::Vector3d>& normals)
+{
+  const std::size_t n = p.size();
+  std::vector<char> collinear(n, 0);
+  std::vector<double> tilt(n, 0.);
+  parallel_for(n, [&](std::size_t i) {
+    Eigen::Vector3d mean = p[i];
+    for(std::size_t j : neighbours[i])
+      mean += p[j];
+    mean /= double(neighbours[i].size() + 1);
+    Eigen::Matrix3d covariance = (p[i] - mean) * (p[i] - mean).transpose();
+    for(std::size_t j : neighbours[i])
+      covariance += (p[j] - mean) * (p[j] - mean).transpose();
+    const Eigen::SelfAdjointEigenSolver<Eigen::Matrix3d> solver(covariance);
+    // (the second largest variance is rounding against the largest)
+    collinear[i] = !(solver.eigenvalues()[1] > 1e-20 * solver.eigenvalues()[2]);
+    const double c = std::abs(solver.eigenvectors().col(0).normalized().dot(normals[i].normalized()));
+    tilt[i] = std::acos((std::min)(c, 1.)) * 180. / 3.14159265358979323846;
+  });
+  Neighbourhood_planes result;
+  result.first_collinear = std::size_t(std::find(collinear.begin(), collinear.end(), char(1)) - collinear.begin());
+  if(n > 0)
+  {
+    std::nth_element(tilt.begin(), tilt.begin() + std::ptrdiff_t(n / 2), tilt.end());
+    result.median_tilt = tilt[n / 2];
+  }
+  return result;
+}
+
 inline std::vector<Eigen::Vector3d> fitted_point_normals(const std::vector<Eigen::Vector3d>& q,
                                                          const std::vector<std::vector<std::size_t> >& neighbours,
                                                          const std::vector<Eigen::Vector3d>& previous, double sigma)
