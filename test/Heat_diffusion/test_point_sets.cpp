@@ -308,7 +308,7 @@ void check_several_components()
 
 // The features of the NS at k = 0, 10, 40 on the point set against the mesh's: the
 // share of each side's features within two point spacings of a feature of the same kind
-// on the other side.
+// on the other side; with the normals estimated, and with the mesh's given.
 void compare_features_with_mesh(const std::string& name, unsigned int k)
 {
   Mesh mesh = test_support::load<Mesh>(name);
@@ -318,13 +318,8 @@ void compare_features_with_mesh(const std::string& name, unsigned int k)
   auto mesh_ns = mesh.add_property_map<Vertex, double>("v:ns", 0.).first;
   for(Vertex v : mesh.vertices())
     mesh_ns[v] = mesh_diffusion.normal_controlled_coordinates().normal_signature(v);
-  const HD::Point_set_anisotropic_heat_diffusion<std::vector<Point> > diffusion(points, k);
-  Eigen::VectorXd ns(Eigen::Index(points.size()));
-  for(std::size_t i = 0; i < points.size(); ++i)
-    ns[Eigen::Index(i)] = diffusion.normal_controlled_coordinates().normal_signature(i);
   const std::vector<std::size_t> steps = {0, 10, 40};
   const auto on_mesh = HD::detect_multiscale_features(mesh_diffusion, mesh_ns, steps);
-  const auto on_points = HD::detect_point_set_multiscale_features(diffusion, ns, steps);
   // the share of `a` within two spacings of some point of `b`
   const auto near = [&](const std::vector<std::size_t>& a, const std::vector<std::size_t>& b) {
     std::size_t found = 0;
@@ -337,35 +332,46 @@ void compare_features_with_mesh(const std::string& name, unsigned int k)
         }
     return a.empty() ? 1. : double(found) / double(a.size());
   };
-  for(std::size_t s = 0; s < steps.size(); ++s)
-  {
-    std::vector<std::size_t> mesh_convex, mesh_concave;
-    for(Vertex v : on_mesh[s].convex)
-      mesh_convex.push_back(mesh_diffusion.vertex_index(v));
-    for(Vertex v : on_mesh[s].concave)
-      mesh_concave.push_back(mesh_diffusion.vertex_index(v));
-    const std::vector<std::size_t>& convex = on_points[s].convex;
-    const std::vector<std::size_t>& concave = on_points[s].concave;
-    const double precision =
-        (near(convex, mesh_convex) * double(convex.size()) + near(concave, mesh_concave) * double(concave.size())) /
-        double((std::max)(std::size_t(1), convex.size() + concave.size()));
-    const double recall = (near(mesh_convex, convex) * double(mesh_convex.size()) +
-                           near(mesh_concave, concave) * double(mesh_concave.size())) /
-                          double((std::max)(std::size_t(1), mesh_convex.size() + mesh_concave.size()));
-    std::cout << name << " as points, k = " << k << ", features at scale " << steps[s] << ": "
-              << convex.size() << " convex and " << concave.size() << " concave (mesh: " << mesh_convex.size()
-              << " and " << mesh_concave.size() << "); within two spacings (" << spacing << ") of a mesh feature: "
-              << 100. * precision << " %, mesh features within two spacings of a point-set one: " << 100. * recall
-              << " %" << std::endl;
-    // (the aim, 90 % within two spacings, is not reached: the figures are printed)
-    const Eigen::VectorXd field = diffusion.diffuse(ns, steps[s]);
-    bool signs = !convex.empty() && !concave.empty();
-    for(std::size_t i : convex)
-      signs = signs && field[Eigen::Index(i)] > 0;
-    for(std::size_t i : concave)
-      signs = signs && field[Eigen::Index(i)] < 0;
-    CHECK_MESSAGE(signs, name << ": at scale " << steps[s] << ", no features, or features of the wrong sign");
-  }
+  const auto compare = [&](const auto& diffusion, const std::string& label) {
+    Eigen::VectorXd ns(Eigen::Index(points.size()));
+    for(std::size_t i = 0; i < points.size(); ++i)
+      ns[Eigen::Index(i)] = diffusion.normal_controlled_coordinates().normal_signature(i);
+    const auto on_points = HD::detect_point_set_multiscale_features(diffusion, ns, steps);
+    for(std::size_t s = 0; s < steps.size(); ++s)
+    {
+      std::vector<std::size_t> mesh_convex, mesh_concave;
+      for(Vertex v : on_mesh[s].convex)
+        mesh_convex.push_back(mesh_diffusion.vertex_index(v));
+      for(Vertex v : on_mesh[s].concave)
+        mesh_concave.push_back(mesh_diffusion.vertex_index(v));
+      const std::vector<std::size_t>& convex = on_points[s].convex;
+      const std::vector<std::size_t>& concave = on_points[s].concave;
+      const double precision =
+          (near(convex, mesh_convex) * double(convex.size()) + near(concave, mesh_concave) * double(concave.size())) /
+          double((std::max)(std::size_t(1), convex.size() + concave.size()));
+      const double recall = (near(mesh_convex, convex) * double(mesh_convex.size()) +
+                             near(mesh_concave, concave) * double(mesh_concave.size())) /
+                            double((std::max)(std::size_t(1), mesh_convex.size() + mesh_concave.size()));
+      std::cout << name << " as points, k = " << k << ", " << label << ", features at scale " << steps[s] << ": "
+                << convex.size() << " convex and " << concave.size() << " concave (mesh: " << mesh_convex.size()
+                << " and " << mesh_concave.size() << "); within two spacings (" << spacing << ") of a mesh feature: "
+                << 100. * precision << " %, mesh features within two spacings of a point-set one: " << 100. * recall
+                << " %" << std::endl;
+      // (the aim, 90 % within two spacings, is not reached: the figures are printed)
+      const Eigen::VectorXd field = diffusion.diffuse(ns, steps[s]);
+      bool signs = !convex.empty() && !concave.empty();
+      for(std::size_t i : convex)
+        signs = signs && field[Eigen::Index(i)] > 0;
+      for(std::size_t i : concave)
+        signs = signs && field[Eigen::Index(i)] < 0;
+      CHECK_MESSAGE(signs, name << ", " << label << ": at scale " << steps[s]
+                                << ", no features, or features of the wrong sign");
+    }
+  };
+  compare(HD::Point_set_anisotropic_heat_diffusion<std::vector<Point> >(points, k), "estimated normals");
+  const Point_set with_normals =
+      test_support::mesh_vertices_as_points(mesh, mesh_diffusion.normal_controlled_coordinates());
+  compare(HD::Point_set_anisotropic_heat_diffusion<Point_set>(with_normals, k), "the mesh's normals");
 }
 
 // Bad input gives an exception that names the point.
@@ -472,6 +478,42 @@ void check_point_set_3()
   CHECK_MESSAGE(different == 0, "Point_set_3 without normals: " << different << " NS differ from a vector's");
 }
 
+// A thin slab: two square grids of spacing 1, 0.3 apart, the lower one shifted by half
+// a spacing, with normals +z above and -z below. A point's nearest neighbours include
+// points of the other side; with the normals given, each fan is made of its own side
+// only, so that every interior fan is flat (NS 0) and lists no point of the other side.
+void check_thin_slab()
+{
+  Point_set slab;
+  slab.add_normal_map();
+  const int side = 12;
+  for(int layer = 0; layer < 2; ++layer)
+    for(int x = 0; x < side; ++x)
+      for(int y = 0; y < side; ++y)
+        slab.insert(layer == 0 ? Point(x, y, 0.15) : Point(x + 0.5, y + 0.5, -0.15),
+                    Vector(0, 0, layer == 0 ? 1 : -1));
+  const std::size_t per_layer = std::size_t(side * side);
+  const HD::Point_set_normal_controlled_coordinates<Point_set> ncc(slab, 8);
+  std::size_t interior = 0, mixed = 0;
+  double worst_ns = 0;
+  for(std::size_t i = 0; i < slab.size(); ++i)
+  {
+    const Point& p = slab.point(Point_set::Index(i));
+    const double x = p.x() - (i < per_layer ? 0. : 0.5), y = p.y() - (i < per_layer ? 0. : 0.5);
+    if(x < 2 || y < 2 || x > side - 3 || y > side - 3)
+      continue;
+    ++interior;
+    for(std::size_t j : ncc.fan(i))
+      mixed += (i < per_layer) != (j < per_layer) ? 1 : 0;
+    worst_ns = (std::max)(worst_ns, std::abs(ncc.normal_signature(i)));
+  }
+  std::cout << "thin slab: " << interior << " interior points, " << mixed
+            << " fan neighbours on the other side, max |NS| " << worst_ns << std::endl;
+  CHECK(interior == 2 * 8 * 8);
+  CHECK_MESSAGE(mixed == 0, "thin slab: " << mixed << " fan neighbours on the other side");
+  CHECK_MESSAGE(worst_ns <= 1e-12, "thin slab: an interior NS of " << worst_ns);
+}
+
 // neighbor_radius: with a radius that holds every point's k nearest neighbours and k as
 // the limit, the neighbourhoods, and so the NCC, are the k nearest ones.
 void check_neighbor_radius()
@@ -570,12 +612,13 @@ void run()
     check_bad_input();
     check_point_set_3();
     check_neighbor_radius();
+    check_thin_slab();
     check_kernel<CGAL::Exact_predicates_exact_constructions_kernel>("Epeck");
     check_kernel<CGAL::Simple_cartesian<double> >("Simple_cartesian<double>");
     compare_with_mesh("fandisk.off", 8, 0.9);
     compare_with_mesh("armadillo.off", 8, 0.9);
     compare_with_mesh("mech-holes-shark.off", 8, 0.9);
-    compare_with_mesh("elephant.off", 8, 0.8, false);
+    compare_with_mesh("elephant.off", 8, 0.9, false);
     // with k = 10, mst_orient_normals() flips a region of fandisk, which must be refused
     CHECK_THROWS(HD::Point_set_normal_controlled_coordinates<std::vector<Point> >(
                      vertex_points(test_support::load<Mesh>("fandisk.off")), 10),

@@ -61,6 +61,20 @@ inline double largest_relative_displacement(const Point_set& before, const Point
   return diagonal > 0 ? largest / diagonal : 0.;
 }
 
+// The tail of the commands that move the points: `after` written to `output`, then
+// reported; returns the largest displacement from `before`, relative to the diagonal.
+inline double write_moved_points(Run& r, const Point_set& before, const Point_set& after,
+                                 const Neighbourhood_options& nb, const std::string& output)
+{
+  const double relative_displacement = largest_relative_displacement(before, after);
+  Output_files files;
+  write_points_ply(files, output, after);
+  files.commit();
+  r.timer.stop("write");
+  report_point_set(r, after, nb);
+  return relative_displacement;
+}
+
 // decompose on a point set: the bands and the residual of the NS or of a field, written
 // to `outputs` (the bands, then the residual).
 inline void decompose_on_points(Run& r, std::size_t levels, const std::optional<std::size_t>& steps_per_level,
@@ -146,13 +160,7 @@ inline void enhance_on_points(Run& r, const std::vector<double>& weights,
   r.timer.stop("filter_shape");
   // Measured before writing: a failure leaves no output.
   const double output_variance = for_points(r.input, [&] { return normal_signature_variance(points, nb); });
-  const double relative_displacement = largest_relative_displacement(original, points);
-  Output_files files;
-  write_points_ply(files, output, points);
-  files.commit();
-  r.timer.stop("write");
-
-  report_point_set(r, points, nb);
+  const double relative_displacement = write_moved_points(r, original, points, nb, output);
   if(!r.quiet)
     std::cerr << "NS variance " << input_variance << " -> " << output_variance << "; largest displacement "
               << relative_displacement << " of the diagonal\nwritten to " << output << "\n";
@@ -213,13 +221,7 @@ inline void denoise_on_points(Run& r, const Point_set_denoising_options& options
   });
   progress.finish();
   r.timer.stop("denoise");
-  const double relative_displacement = largest_relative_displacement(noisy, points);
-  Output_files files;
-  write_points_ply(files, output, points);
-  files.commit();
-  r.timer.stop("write");
-
-  report_point_set(r, points, nb);
+  const double relative_displacement = write_moved_points(r, noisy, points, nb, output);
   if(!r.quiet)
     std::cerr << r.input << ": noise level " << report.noise_level << ", " << report.iterations
               << " iterations, points moved by " << report.mean_displacement << " on average along their normals\n"

@@ -104,7 +104,10 @@ Point_set_surface make_point_set_surface(const PointRange& points, unsigned int 
 ///
 /// <b>Normals.</b> The tangent plane is that of the given normals (the `normal_map`,
 /// or the normal property of a `CGAL::Point_set_3` that has one), which the NCC is then
-/// measured against. Without normals, the tangent plane is that of
+/// measured against. They also choose the neighbours: the fan of a point is made of the
+/// `k` nearest points on its side of the surface (\f$ n_i \cdot n_j > 0 \f$, searched among
+/// up to `8k` nearest points; with `neighbor_radius`, those within it), so that the two
+/// sides of a thin part, or of a sharp crease, do not make one fan. Without normals, the tangent plane is that of
 /// `CGAL::jet_estimate_normals()`, oriented by `CGAL::mst_orient_normals()` (both over
 /// the `k` nearest neighbours; with a radius and `k = 0`, as many as the point with the
 /// fewest neighbours within the radius has), and the NCC is measured against the

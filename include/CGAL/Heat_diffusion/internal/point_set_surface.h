@@ -38,6 +38,7 @@
 #include <cstddef>
 #include <functional>
 #include <limits>
+#include <memory>
 #include <numeric>
 #include <sstream>
 #include <tuple>
@@ -94,14 +95,9 @@ struct Point_problems
   }
 };
 
-// The neighbours of every point (without the point itself), nearest first: the k nearest,
-// or those within the radius (nearest k of them if k > 0), by CGAL's kd-tree, in the
-// normalised frame. Throws, naming the points, if two points coincide there: in the
-// input, or after the translation of the frame rounded them to one (a point far from
-// all the others, at 1e300 among points near 1: `extent`, the bounding box's largest
-// side in user units, says so).
-inline std::vector<std::vector<std::size_t> > find_neighbours(const std::vector<Eigen::Vector3d>& points,
-                                                              std::size_t k, double radius, double extent)
+// CGAL's kd-tree over the points, in the normalised frame, queried point by point (the
+// queries only read it: they run in parallel).
+class Point_neighbour_search
 {
   typedef CGAL::Exact_predicates_inexact_constructions_kernel K;
   typedef CGAL::Pointer_property_map<K::Point_3>::type Point_of_index;
@@ -111,44 +107,71 @@ inline std::vector<std::vector<std::size_t> > find_neighbours(const std::vector<
   typedef CGAL::Orthogonal_k_neighbor_search<Traits, Distance> Search;
   typedef Search::Tree Tree;
 
-  const std::size_t n = points.size();
-  std::vector<K::Point_3> cgal_points(n);
-  for(std::size_t i = 0; i < n; ++i)
-    cgal_points[i] = K::Point_3(points[i].x(), points[i].y(), points[i].z());
-  const Point_of_index point_of_index = CGAL::make_property_map(cgal_points);
-  std::vector<std::size_t> indices(n);
-  std::iota(indices.begin(), indices.end(), std::size_t(0));
-  const Traits traits(point_of_index);
-  Tree tree(indices.begin(), indices.end(), Tree::Splitter(), traits);
-  tree.build();  // before the parallel queries, which only read it
-  const Distance distance(point_of_index);
+public:
+  explicit Point_neighbour_search(const std::vector<Eigen::Vector3d>& points)
+    : points_(points), cgal_points_(points.size()), traits_(CGAL::make_property_map(cgal_points_)),
+      distance_(CGAL::make_property_map(cgal_points_))
+  {
+    for(std::size_t i = 0; i < points.size(); ++i)
+      cgal_points_[i] = K::Point_3(points[i].x(), points[i].y(), points[i].z());
+    std::vector<std::size_t> indices(points.size());
+    std::iota(indices.begin(), indices.end(), std::size_t(0));
+    tree_.reset(new Tree(indices.begin(), indices.end(), Tree::Splitter(), traits_));
+    tree_->build();  // before the parallel queries
+  }
+  Point_neighbour_search(const Point_neighbour_search&) = delete;
+  Point_neighbour_search& operator=(const Point_neighbour_search&) = delete;
 
-  std::vector<std::vector<std::size_t> > neighbours(n);
-  Point_problems problems(n);
-  parallel_for(n, [&](std::size_t i) {
-    std::vector<std::pair<double, std::size_t> > found;  // (squared distance, index)
+  // (squared distance, index) of the points within `radius` of point i (the nearest k of
+  // them if k > 0), or else of its k nearest, nearest first, point i among them.
+  std::vector<std::pair<double, std::size_t> > query(std::size_t i, std::size_t k, double radius) const
+  {
+    std::vector<std::pair<double, std::size_t> > found;
     if(radius > 0)
     {
-      const CGAL::Fuzzy_sphere<Traits> sphere(i, radius, 0., traits);
+      const CGAL::Fuzzy_sphere<Traits> sphere(i, radius, 0., traits_);
       // (the kd-tree assigns its output iterator, which a lambda's is not)
       const std::function<void(std::size_t)> add = [&](std::size_t j) {
-        found.emplace_back((points[j] - points[i]).squaredNorm(), j);
+        found.emplace_back((points_[j] - points_[i]).squaredNorm(), j);
       };
-      tree.search(boost::make_function_output_iterator(add), sphere);
+      tree_->search(boost::make_function_output_iterator(add), sphere);
       std::sort(found.begin(), found.end());
-      if(k > 0 && found.size() > k + 1)
-        found.resize(k + 1);
+      if(k > 0 && found.size() > k)
+        found.resize(k);
     }
     else
     {
-      // (k + 1: the point itself is among them)
-      const Search search(tree, cgal_points[i], unsigned(k + 1), 0., true, distance);
+      const Search search(*tree_, cgal_points_[i], unsigned(k), 0., true, distance_);
       for(const auto& result : search)
-        found.emplace_back((points[result.first] - points[i]).squaredNorm(), result.first);
+        found.emplace_back((points_[result.first] - points_[i]).squaredNorm(), result.first);
       std::sort(found.begin(), found.end());
     }
+    return found;
+  }
+
+private:
+  const std::vector<Eigen::Vector3d>& points_;
+  std::vector<K::Point_3> cgal_points_;
+  Traits traits_;
+  Distance distance_;
+  std::unique_ptr<Tree> tree_;
+};
+
+// The neighbours of every point (without the point itself), nearest first: the k nearest,
+// or those within the radius (nearest k of them if k > 0). Throws, naming the points, if
+// two points coincide in the normalised frame: in the input, or after the translation
+// of the frame rounded them to one (a point far from all the others, at 1e300 among
+// points near 1: `extent`, the bounding box's largest side in user units, says so).
+inline std::vector<std::vector<std::size_t> > find_neighbours(const Point_neighbour_search& search,
+                                                              std::size_t n, std::size_t k, double radius,
+                                                              double extent)
+{
+  std::vector<std::vector<std::size_t> > neighbours(n);
+  Point_problems problems(n);
+  parallel_for(n, [&](std::size_t i) {
+    // (k + 1: the point itself is among them)
     auto& list = neighbours[i];
-    for(const auto& f : found)
+    for(const auto& f : search.query(i, k > 0 ? k + 1 : 0, radius))
       if(f.second != i)
       {
         if(!(f.first > 0))
@@ -273,6 +296,8 @@ struct Point_set_neighbourhoods
 {
   std::vector<std::vector<std::size_t> > neighbours;  // per point, nearest first
   std::vector<Eigen::Vector3d> normals;               // the user's (normalised) or estimated and oriented
+  std::unique_ptr<Point_neighbour_search> search;     // over the points of the frame
+  double radius = 0;                                  // neighbor_radius in the frame (0: none)
 };
 
 // Checks the input, puts the points (user coordinates) in the normalised frame of `mesh`
@@ -326,7 +351,9 @@ inline Point_set_neighbourhoods prepare_point_set(std::vector<Eigen::Vector3d> u
   // (a radius in user units is scaled like the points; a power of two, exact)
   const double radius = std::ldexp(options.neighbor_radius, mesh.scale_exponent);
 
-  result.neighbours = find_neighbours(p, options.k, radius, 2 * (0.5 * hi - 0.5 * lo).maxCoeff());
+  result.search.reset(new Point_neighbour_search(p));
+  result.radius = radius;
+  result.neighbours = find_neighbours(*result.search, n, options.k, radius, 2 * (0.5 * hi - 0.5 * lo).maxCoeff());
   for(std::size_t i = 0; i < n; ++i)
     if(result.neighbours[i].size() < 2)  // (only with a radius: else there are k >= 2)
     {
@@ -355,6 +382,41 @@ inline Point_set_neighbourhoods prepare_point_set(std::vector<Eigen::Vector3d> u
   return result;
 }
 
+// Where the normals are the user's: the neighbours of each point on its own side of the
+// surface (n_i . n_j > 0). Across a thin part (an ear, a trunk, a thin wall) the nearest
+// neighbours include points of the other side, whose projections on the tangent plane
+// fall among those of the point's own side and make a fan of both; a sharp crease
+// leaves out the points across it, whose projections fold onto the point's side. The
+// k nearest are searched again among 2k, 4k then 8k points until k on the point's side
+// are found (with a radius: those within it). A point with fewer than two neighbours
+// on its side (a normal against its neighbours') keeps its nearest ones.
+inline void keep_neighbours_on_the_same_side(Point_set_neighbourhoods& prepared, std::size_t k)
+{
+  const std::vector<Eigen::Vector3d>& normals = prepared.normals;
+  const std::size_t n = normals.size();
+  parallel_for(n, [&](std::size_t i) {
+    std::vector<std::size_t>& list = prepared.neighbours[i];
+    const auto same_side = [&](std::size_t j) { return normals[i].dot(normals[j]) > 0; };
+    if(std::all_of(list.begin(), list.end(), same_side))
+      return;
+    std::vector<std::size_t> kept;
+    for(std::size_t wider = 2 * k;; wider *= 2)
+    {
+      kept.clear();
+      const std::size_t asked = prepared.radius > 0 ? 0 : (std::min)(wider + 1, n);
+      for(const auto& found : prepared.search->query(i, asked, prepared.radius))
+        if(found.second != i && same_side(found.second))
+          kept.push_back(found.second);
+      if(prepared.radius > 0 || kept.size() >= k || wider >= 8 * k || asked == n)
+        break;
+    }
+    if(k > 0 && kept.size() > k)
+      kept.resize(k);
+    if(kept.size() >= 2)
+      list.swap(kept);
+  });
+}
+
 // Builds the surface of `points` (user coordinates): neighbours, normals (`user_normals`
 // if not empty, in user orientation, else estimated and oriented), fans, NCC and the
 // graph. Throws std::invalid_argument, naming the point, where the package cannot
@@ -377,6 +439,8 @@ inline Point_set_surface make_point_set_surface(std::vector<Eigen::Vector3d> use
   Point_set_neighbourhoods prepared =
       prepare_point_set(std::move(user_points), std::move(user_normals), options, mesh);
   const std::vector<Eigen::Vector3d>& p = mesh.points;
+  if(given_normals)
+    keep_neighbours_on_the_same_side(prepared, options.k);
   const std::vector<std::vector<std::size_t> >& neighbours = prepared.neighbours;
   std::vector<Eigen::Vector3d>& normals = prepared.normals;
 
