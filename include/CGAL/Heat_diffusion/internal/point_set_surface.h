@@ -290,14 +290,48 @@ inline bool keep_resolved_triangles(const Indexed_mesh& mesh, std::size_t i, std
   return true;
 }
 
+// Where the normals are the user's, the neighbours of each point's fan are those on its
+// side of the surface (n_i . n_j > 0). Across a thin part (an ear, a trunk, a thin wall)
+// the nearest neighbours include points of the other side, whose projections on the
+// tangent plane fall among those of the point's own side and make one fan of both; the
+// far side of a sharp crease, whose projections fold onto the point's side, is left out
+// too. The k nearest are searched again among 2k, 4k then 8k points until k on the
+// point's side are found (with a radius: those within it). A point with fewer than two
+// neighbours on its side (a normal against its neighbours') keeps its nearest ones.
+inline void keep_neighbours_on_the_same_side(const Point_neighbour_search& search,
+                                             const std::vector<Eigen::Vector3d>& normals, std::size_t k,
+                                             double radius, std::vector<std::vector<std::size_t> >& neighbours)
+{
+  const std::size_t n = normals.size();
+  parallel_for(n, [&](std::size_t i) {
+    std::vector<std::size_t>& list = neighbours[i];
+    const auto same_side = [&](std::size_t j) { return normals[i].dot(normals[j]) > 0; };
+    if(std::all_of(list.begin(), list.end(), same_side))
+      return;
+    std::vector<std::size_t> kept;
+    for(std::size_t wider = 2 * k;; wider *= 2)
+    {
+      kept.clear();
+      const std::size_t asked = radius > 0 ? 0 : (std::min)(wider + 1, n);
+      for(const auto& found : search.query(i, asked, radius))
+        if(found.second != i && same_side(found.second))
+          kept.push_back(found.second);
+      if(radius > 0 || kept.size() >= k || wider >= 8 * k || asked == n)
+        break;
+    }
+    if(k > 0 && kept.size() > k)
+      kept.resize(k);
+    if(kept.size() >= 2)
+      list.swap(kept);
+  });
+}
+
 // The points in the normalised frame of Indexed_mesh, their neighbours and unit normals:
 // what every point-set algorithm of the package starts from.
 struct Point_set_neighbourhoods
 {
   std::vector<std::vector<std::size_t> > neighbours;  // per point, nearest first
   std::vector<Eigen::Vector3d> normals;               // the user's (normalised) or estimated and oriented
-  std::unique_ptr<Point_neighbour_search> search;     // over the points of the frame
-  double radius = 0;                                  // neighbor_radius in the frame (0: none)
 };
 
 // Checks the input, puts the points (user coordinates) in the normalised frame of `mesh`
@@ -308,7 +342,8 @@ struct Point_set_neighbourhoods
 // estimated or oriented. An empty input gives empty neighbourhoods.
 inline Point_set_neighbourhoods prepare_point_set(std::vector<Eigen::Vector3d> user_points,
                                                   std::vector<Eigen::Vector3d> user_normals,
-                                                  const Point_set_surface_options& options, Indexed_mesh& mesh)
+                                                  const Point_set_surface_options& options, Indexed_mesh& mesh,
+                                                  bool neighbours_on_the_same_side = false)
 {
   const std::size_t n = user_points.size();
   const bool given_normals = !user_normals.empty();
@@ -351,9 +386,9 @@ inline Point_set_neighbourhoods prepare_point_set(std::vector<Eigen::Vector3d> u
   // (a radius in user units is scaled like the points; a power of two, exact)
   const double radius = std::ldexp(options.neighbor_radius, mesh.scale_exponent);
 
-  result.search.reset(new Point_neighbour_search(p));
-  result.radius = radius;
-  result.neighbours = find_neighbours(*result.search, n, options.k, radius, 2 * (0.5 * hi - 0.5 * lo).maxCoeff());
+  // (released before the normals are estimated, which build trees of their own)
+  std::unique_ptr<const Point_neighbour_search> search(new Point_neighbour_search(p));
+  result.neighbours = find_neighbours(*search, n, options.k, radius, 2 * (0.5 * hi - 0.5 * lo).maxCoeff());
   for(std::size_t i = 0; i < n; ++i)
     if(result.neighbours[i].size() < 2)  // (only with a radius: else there are k >= 2)
     {
@@ -366,9 +401,12 @@ inline Point_set_neighbourhoods prepare_point_set(std::vector<Eigen::Vector3d> u
     result.normals = std::move(user_normals);
     for(Eigen::Vector3d& v : result.normals)
       v.stableNormalize();
+    if(neighbours_on_the_same_side)
+      keep_neighbours_on_the_same_side(*search, result.normals, options.k, radius, result.neighbours);
   }
   else
   {
+    search.reset();
     // (with a radius and no limit: as many neighbours as the point with the fewest has)
     std::size_t k = options.k;
     if(k == 0)
@@ -380,41 +418,6 @@ inline Point_set_neighbourhoods prepare_point_set(std::vector<Eigen::Vector3d> u
     result.normals = estimate_oriented_normals(p, k);
   }
   return result;
-}
-
-// Where the normals are the user's: the neighbours of each point on its own side of the
-// surface (n_i . n_j > 0). Across a thin part (an ear, a trunk, a thin wall) the nearest
-// neighbours include points of the other side, whose projections on the tangent plane
-// fall among those of the point's own side and make a fan of both; a sharp crease
-// leaves out the points across it, whose projections fold onto the point's side. The
-// k nearest are searched again among 2k, 4k then 8k points until k on the point's side
-// are found (with a radius: those within it). A point with fewer than two neighbours
-// on its side (a normal against its neighbours') keeps its nearest ones.
-inline void keep_neighbours_on_the_same_side(Point_set_neighbourhoods& prepared, std::size_t k)
-{
-  const std::vector<Eigen::Vector3d>& normals = prepared.normals;
-  const std::size_t n = normals.size();
-  parallel_for(n, [&](std::size_t i) {
-    std::vector<std::size_t>& list = prepared.neighbours[i];
-    const auto same_side = [&](std::size_t j) { return normals[i].dot(normals[j]) > 0; };
-    if(std::all_of(list.begin(), list.end(), same_side))
-      return;
-    std::vector<std::size_t> kept;
-    for(std::size_t wider = 2 * k;; wider *= 2)
-    {
-      kept.clear();
-      const std::size_t asked = prepared.radius > 0 ? 0 : (std::min)(wider + 1, n);
-      for(const auto& found : prepared.search->query(i, asked, prepared.radius))
-        if(found.second != i && same_side(found.second))
-          kept.push_back(found.second);
-      if(prepared.radius > 0 || kept.size() >= k || wider >= 8 * k || asked == n)
-        break;
-    }
-    if(k > 0 && kept.size() > k)
-      kept.resize(k);
-    if(kept.size() >= 2)
-      list.swap(kept);
-  });
 }
 
 // Builds the surface of `points` (user coordinates): neighbours, normals (`user_normals`
@@ -437,10 +440,8 @@ inline Point_set_surface make_point_set_surface(std::vector<Eigen::Vector3d> use
   if(n == 0)
     return surface;
   Point_set_neighbourhoods prepared =
-      prepare_point_set(std::move(user_points), std::move(user_normals), options, mesh);
+      prepare_point_set(std::move(user_points), std::move(user_normals), options, mesh, true);
   const std::vector<Eigen::Vector3d>& p = mesh.points;
-  if(given_normals)
-    keep_neighbours_on_the_same_side(prepared, options.k);
   const std::vector<std::vector<std::size_t> >& neighbours = prepared.neighbours;
   std::vector<Eigen::Vector3d>& normals = prepared.normals;
 
