@@ -339,7 +339,9 @@ struct Point_set_neighbourhoods
 // orientation, else estimated and oriented). Throws std::invalid_argument, naming the
 // point, where the package cannot process the input: a non-finite coordinate or normal,
 // a null normal, fewer than k + 1 points, coinciding points, a normal that cannot be
-// estimated or oriented. An empty input gives empty neighbourhoods.
+// estimated or oriented. An empty input gives empty neighbourhoods. With given normals
+// and `neighbours_on_the_same_side` (the fans'), the neighbours are those of
+// keep_neighbours_on_the_same_side().
 inline Point_set_neighbourhoods prepare_point_set(std::vector<Eigen::Vector3d> user_points,
                                                   std::vector<Eigen::Vector3d> user_normals,
                                                   const Point_set_surface_options& options, Indexed_mesh& mesh,
