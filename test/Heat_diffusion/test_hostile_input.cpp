@@ -45,6 +45,7 @@
 #include <cstdint>
 #include <filesystem>
 #include <fstream>
+#include <iterator>
 #include <limits>
 #include <map>
 #include <set>
@@ -742,9 +743,25 @@ void check_built_meshes()
       CHECK_THROWS(HD::Normal_controlled_coordinates<Mesh>{triangulated}, std::invalid_argument,
                    "do not form a cycle: the halfedge structure is broken");
   }
-  // A face that is tiny next to the rest of the mesh has zero area in double.
+  // A face that is tiny next to the rest of the mesh is lost to rounding in the
+  // normalised frame: refused, naming the vertex that stretches the box.
   CHECK_THROWS(HD::Normal_controlled_coordinates<Mesh>{triangle_pair(Point(-1.5e308, 1.7e308, 1e308))},
-               std::invalid_argument, "face 0 (vertices 0, 1, 2) has zero area");
+               std::invalid_argument,
+               "face 0 (vertices 0, 1, 2) is too small for double precision to resolve in a bounding box whose "
+               "largest side is 1.7e+308; vertex 3, at ");
+  // So are the faces beside one far vertex in a face of its own, from about 1e10 on
+  // (at 5.6e78 the others' x coordinates round to one value, and their faces turn
+  // silently into faces of another shape): refused, naming the far vertex.
+  for(double far : {1e12, 5.5555555555555555e78, 1e300})
+  {
+    Mesh mesh = triangle_pair(Point(0, 1, 0.5));
+    const Vertex b = *std::next(mesh.vertices().begin()), c = *std::next(mesh.vertices().begin(), 2);
+    mesh.add_face(b, mesh.add_vertex(Point(far, 0.5, 0)), c);
+    CHECK_THROWS(HD::Normal_controlled_coordinates<Mesh>{mesh}, std::invalid_argument,
+                 "is too small for double precision to resolve");
+    CHECK_THROWS(HD::Normal_controlled_coordinates<Mesh>{mesh}, std::invalid_argument,
+                 "vertex 4, at ");
+  }
   // The empty mesh: nothing to compute, no kernel.
   {
     const Mesh empty;

@@ -13,8 +13,8 @@
 // then NCC, the reconstruction, the default denoising, a small heat kernel (m <= 10),
 // diffusion and feature detection, with parameters drawn from the input. A file of
 // points without faces (the tool's holds_points_only()) goes the tool's point-set way
-// instead: read_point_file(), then the point-set NCC, diffusion and features with k
-// neighbours drawn from the input, with the file's normals and without them.
+// instead: read_point_file(), then the point-set NCC, diffusion, features and denoising
+// with k neighbours drawn from the input, with the file's normals and without them.
 //
 // Fine: std::invalid_argument and std::runtime_error from the package, an Input_error
 // from the tool's reading (and any std::exception from CGAL's reading and repair on
@@ -33,6 +33,7 @@
 #include <CGAL/Heat_diffusion/multiscale_features.h>
 #include <CGAL/Heat_diffusion/normal_controlled_coordinates.h>
 #include <CGAL/Heat_diffusion/point_set_anisotropic_heat_diffusion.h>
+#include <CGAL/Heat_diffusion/point_set_denoising.h>
 #include <CGAL/Heat_diffusion/point_set_multiscale_features.h>
 #include <CGAL/Heat_diffusion/reconstruction.h>
 
@@ -205,7 +206,7 @@ void run_package(const Mesh& mesh, const Parameters& p)
 }
 
 // The package on one point set, as the tool runs it: the point-set diffusion with k
-// neighbours, its NCC, F^k and the features. Returns normally when it computed finite
+// neighbours, its NCC, F^k and the features, then the point-set denoiser. Returns normally when it computed finite
 // results or threw std::invalid_argument / std::runtime_error; calls bug() otherwise.
 void run_point_package(const heat_diffusion_cli::Point_set& points, const Parameters& p)
 {
@@ -239,6 +240,27 @@ void run_point_package(const heat_diffusion_cli::Point_set& points, const Parame
       for(const auto* list : {&scale_features.convex, &scale_features.concave})
         for(std::size_t i : *list)
           require(i < n, "feature point out of range");
+  }
+  catch(const std::invalid_argument&)
+  {
+  }
+  catch(const std::runtime_error&)
+  {
+  }
+  catch(const std::exception& e)
+  {
+    bug(std::string("unexpected exception from the package on a point set: ") + e.what());
+  }
+  // The point-set denoiser, with the same k.
+  try
+  {
+    Point_set copy = points;
+    HD::denoise_point_set(copy, k, HD::parameters::number_of_iterations(3));
+    for(auto index : copy)
+    {
+      const auto& q = copy.point(index);
+      require(std::isfinite(q.x()) && std::isfinite(q.y()) && std::isfinite(q.z()), "denoised point not finite");
+    }
   }
   catch(const std::invalid_argument&)
   {

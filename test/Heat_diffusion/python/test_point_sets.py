@@ -112,6 +112,37 @@ def test_bad_point_sets_raise_value_error(case, function):
         POINT_SET_FUNCTIONS[function](P, N, **keywords)
 
 
+def far_point_grid(n, far, axis, normals):
+    """A grid of n points on a bumpy height field (rows of 5, or of 10 from 50 points), its
+    last point moved to `far` along `axis` (0: x, 2: z, -1: -x), with normals or None."""
+    i = np.arange(n)
+    width = 10 if n >= 50 else 5
+    x = i % width + 0.02 * np.sin(7 * i)
+    y = i // width + 0.03 * np.cos(5 * i)
+    P = np.column_stack([x, y, 0.3 * np.sin(x) * np.cos(y) + 0.05 * np.sin(13 * i)])
+    P[-1, abs(axis) if axis >= 0 else 0] = far if axis >= 0 else -far
+    N = np.column_stack([-0.1 * np.cos(x) * np.cos(y), 0.1 * np.sin(x) * np.sin(y), np.ones(n)]) if normals else None
+    return P, N
+
+
+FAR_POINT_CASES = [(far, [10, 22, 35, 100][k % 4], [0, -1, 2][k % 3], normals)
+                   for k, (far, normals) in enumerate((far, normals) for far in [1e40, 5.5555555555555555e78, 1e150,
+                                                                                  1e200, 1e300]
+                                                      for normals in (False, True))]
+
+
+@pytest.mark.parametrize("far, n, axis, normals", FAR_POINT_CASES)
+@pytest.mark.parametrize("function", list(POINT_SET_FUNCTIONS))
+def test_a_far_point_is_named(function, far, n, axis, normals):
+    # One point far from all the others (once a crash of the interpreter, in CGAL's jet
+    # fitting): refused with a message that names it.
+    P, N = far_point_grid(n, far, axis, normals)
+    message = (rf"point \d+ has its \d+ neighbours within .*point {n - 1}, at \S+ from its nearest neighbour, is the "
+               rf"farthest from the others|fewer than k \+ 1 = 25")
+    with pytest.raises(ValueError, match=message):
+        POINT_SET_FUNCTIONS[function](P, N)
+
+
 def test_point_sets_take_both_kernels():
     spectral = hd.PointSetHeatDiffusion(P_BUMP, N_BUMP, kernel="spectral", m=20)
     assert spectral.kernel == "spectral" and hd.PointSetHeatDiffusion(P_BUMP, N_BUMP).kernel == "local"

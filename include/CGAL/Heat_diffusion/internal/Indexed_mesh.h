@@ -31,6 +31,7 @@
 #include <stdexcept>
 #include <string>
 #include <type_traits>
+#include <utility>
 #include <vector>
 
 namespace CGAL {
@@ -77,6 +78,13 @@ struct Indexed_mesh
   }
 };
 
+// The smallest extent of a face or of a point's neighbourhood in the normalised frame,
+// whose half diagonal is below 1, as a power of two: the last place of a coordinate is
+// at most 2^-52 there, so that anything smaller than 2^-32 is known to fewer than six
+// digits. A vertex or point far from all the others (a corrupt line of a file)
+// stretches the frame until the others fall below it.
+constexpr int smallest_resolved_exponent = -32;
+
 // Whether the area of triangle t is above the rounding error of computing it: twice
 // the area must exceed a small multiple of the machine epsilon times the longest edge
 // squared (the smallest angle's sine is then at least that multiple of epsilon). Below
@@ -85,14 +93,67 @@ struct Indexed_mesh
 // computed from it are noise (a Voronoi area of 0 made the NCC NaN; a fuzzing find).
 // The OFF meshes of CGAL's data set without faces of zero area are at least 10^7 times
 // above the bound.
-inline bool has_resolved_area(const Indexed_mesh& mesh, const std::array<std::size_t, 3>& t)
+inline bool has_resolved_area(const Eigen::Vector3d& a, const Eigen::Vector3d& b, const Eigen::Vector3d& c)
 {
   const double rounding_bound = 64 * std::numeric_limits<double>::epsilon();
-  const Eigen::Vector3d& a = mesh.points[t[0]];
-  const Eigen::Vector3d& b = mesh.points[t[1]];
-  const Eigen::Vector3d& c = mesh.points[t[2]];
   const double longest_squared = (std::max)({(b - a).squaredNorm(), (c - b).squaredNorm(), (a - c).squaredNorm()});
   return (b - a).cross(c - a).norm() > rounding_bound * longest_squared;
+}
+
+inline bool has_resolved_area(const Indexed_mesh& mesh, const std::array<std::size_t, 3>& t)
+{
+  return has_resolved_area(mesh.points[t[0]], mesh.points[t[1]], mesh.points[t[2]]);
+}
+
+inline double longest_edge_squared(const Indexed_mesh& mesh, const std::array<std::size_t, 3>& t)
+{
+  const Eigen::Vector3d &a = mesh.points[t[0]], &b = mesh.points[t[1]], &c = mesh.points[t[2]];
+  return (std::max)({(b - a).squaredNorm(), (c - b).squaredNorm(), (a - c).squaredNorm()});
+}
+
+// Whether the triangle of the user points a, b, c has a resolved area in a frame of its
+// own (translated to a, scaled by a power of two to its extent): a triangle that has one
+// there but not in the normalised frame of the whole mesh is lost to the size of the
+// bounding box, which a vertex far from all the others stretches.
+inline bool has_resolved_area_in_its_own_frame(const Eigen::Vector3d& a, const Eigen::Vector3d& b,
+                                               const Eigen::Vector3d& c)
+{
+  // (halves: the differences of coordinates near the largest double do not overflow)
+  const Eigen::Vector3d u = 0.5 * b - 0.5 * a, v = 0.5 * c - 0.5 * a;
+  const double extent = (std::max)(u.cwiseAbs().maxCoeff(), v.cwiseAbs().maxCoeff());
+  if(!(extent > 0))
+    return false;
+  int exponent = 0;
+  std::frexp(extent, &exponent);
+  auto scaled = [exponent](const Eigen::Vector3d& x) {
+    return Eigen::Vector3d(std::ldexp(x.x(), -exponent), std::ldexp(x.y(), -exponent), std::ldexp(x.z(), -exponent));
+  };
+  return has_resolved_area(Eigen::Vector3d::Zero(), scaled(u), scaled(v));
+}
+
+// The vertex farthest from the coordinate-wise median of `points`, and its distance:
+// the one that stretches the bounding box where a vertex lies far from all the others.
+inline std::pair<std::size_t, double> farthest_from_median(const std::vector<Eigen::Vector3d>& points)
+{
+  Eigen::Vector3d median;
+  for(int axis = 0; axis < 3; ++axis)
+  {
+    std::vector<double> values;
+    for(const Eigen::Vector3d& p : points)
+      values.push_back(p[axis]);
+    std::nth_element(values.begin(), values.begin() + std::ptrdiff_t(values.size() / 2), values.end());
+    median[axis] = values[values.size() / 2];
+  }
+  std::pair<std::size_t, double> farthest(0, 0.);
+  for(std::size_t i = 0; i < points.size(); ++i)
+  {
+    // (stableNorm(): the distance of 1e300 from -1e300 overflows as a square)
+    const double d = (0.5 * points[i] - 0.5 * median).stableNorm();
+    if(d > farthest.second)
+      farthest = std::make_pair(i, d);
+  }
+  farthest.second *= 2;  // (infinite if it overflows: then beyond the largest double)
+  return farthest;
 }
 
 // The mean of `values` over the one-ring neighbours of vertex i, which must have some.
@@ -286,6 +347,10 @@ Indexed_mesh make_indexed_mesh(const TriangleMesh& tm, VertexPointMap vpm, Verte
   mesh.points.resize(n);
   std::vector<unsigned char> seen(n, 0);
 
+  auto user_point = [&](typename GT::vertex_descriptor v) {
+    const auto& p = get(vpm, v);
+    return Eigen::Vector3d(CGAL::to_double(p.x()), CGAL::to_double(p.y()), CGAL::to_double(p.z()));
+  };
   // User coordinates, checked for finiteness, and their bounding box.
   Eigen::Vector3d lo = Eigen::Vector3d::Constant(std::numeric_limits<double>::infinity());
   Eigen::Vector3d hi = -lo;
@@ -295,8 +360,7 @@ Indexed_mesh make_indexed_mesh(const TriangleMesh& tm, VertexPointMap vpm, Verte
     if(i >= n || seen[i])
       throw_invalid_input("the vertex index map is not a bijection onto [0, number of vertices)");
     seen[i] = 1;
-    const auto& p = get(vpm, v);
-    const Eigen::Vector3d x(CGAL::to_double(p.x()), CGAL::to_double(p.y()), CGAL::to_double(p.z()));
+    const Eigen::Vector3d x = user_point(v);
     if(!x.allFinite())
     {
       std::ostringstream os;
@@ -327,11 +391,15 @@ Indexed_mesh make_indexed_mesh(const TriangleMesh& tm, VertexPointMap vpm, Verte
   for(auto f : faces(tm))
   {
     std::array<std::size_t, 3> t;
+    std::array<typename GT::vertex_descriptor, 3> corners;
     std::size_t k = 0;
     for(halfedge_descriptor h : halfedges_around_face(halfedge(f, tm), tm))
     {
       if(k < 3)
-        t[k] = static_cast<std::size_t>(get(vim, target(h, tm)));
+      {
+        corners[k] = target(h, tm);
+        t[k] = static_cast<std::size_t>(get(vim, corners[k]));
+      }
       // On a broken halfedge structure, next() may never lead back to the face's
       // halfedge: the circulation would not end.
       if(++k > halfedge_bound)
@@ -344,15 +412,29 @@ Indexed_mesh make_indexed_mesh(const TriangleMesh& tm, VertexPointMap vpm, Verte
          << " (CGAL::Polygon_mesh_processing::triangulate_faces() triangulates a polygon mesh)";
       throw_invalid_input(os.str());
     }
-    if(!has_resolved_area(mesh, t))
+    // (CGAL's meshes have no face below 3e-4 of the frame's unit)
+    const bool resolved_size = longest_edge_squared(mesh, t) >= std::ldexp(1., 2 * smallest_resolved_exponent);
+    if(!resolved_size || !has_resolved_area(mesh, t))
     {
       std::ostringstream os;
-      os << "face " << face_number << " (vertices " << t[0] << ", " << t[1] << ", " << t[2] << ") has zero area";
-      if(mesh.cross_product(t[0], t[1], t[2]).squaredNorm() > 0)
-        os << " up to rounding (its corners are collinear to double precision);"
+      os << "face " << face_number << " (vertices " << t[0] << ", " << t[1] << ", " << t[2] << ") ";
+      if(!resolved_size ||
+         has_resolved_area_in_its_own_frame(user_point(corners[0]), user_point(corners[1]), user_point(corners[2])))
+      {
+        std::vector<Eigen::Vector3d> user_points(n);
+        for(auto v : vertices(tm))
+          user_points[static_cast<std::size_t>(get(vim, v))] = user_point(v);
+        const std::pair<std::size_t, double> farthest = farthest_from_median(user_points);
+        os << "is too small for double precision to resolve in a bounding box whose largest side is "
+           << 2 * (0.5 * hi - 0.5 * lo).maxCoeff() << "; vertex " << farthest.first << ", at " << farthest.second
+           << " from the median of the vertices, is the farthest from the others: a vertex far from all the others"
+           << " stretches the box (remove it)";
+      }
+      else if(mesh.cross_product(t[0], t[1], t[2]).squaredNorm() > 0)
+        os << "has zero area up to rounding (its corners are collinear to double precision);"
            << " CGAL::Polygon_mesh_processing::experimental::remove_almost_degenerate_faces() removes such faces";
       else
-        os << "; CGAL::Polygon_mesh_processing::remove_degenerate_faces() removes such faces";
+        os << "has zero area; CGAL::Polygon_mesh_processing::remove_degenerate_faces() removes such faces";
       throw_invalid_input(os.str());
     }
     mesh.triangles.push_back(t);

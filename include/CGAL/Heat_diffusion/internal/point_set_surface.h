@@ -158,43 +158,77 @@ private:
 };
 
 // The neighbours of every point (without the point itself), nearest first: the k nearest,
-// or those within the radius (nearest k of them if k > 0). Throws, naming the points, if
-// two points coincide in the normalised frame: in the input, or after the translation
-// of the frame rounded them to one (a point far from all the others, at 1e300 among
-// points near 1: `extent`, the bounding box's largest side in user units, says so).
+// or those within the radius (nearest k of them if k > 0).
 inline std::vector<std::vector<std::size_t> > find_neighbours(const Point_neighbour_search& search,
-                                                              std::size_t n, std::size_t k, double radius,
-                                                              double extent)
+                                                              std::size_t n, std::size_t k, double radius)
 {
   std::vector<std::vector<std::size_t> > neighbours(n);
-  Point_problems problems(n);
   parallel_for(n, [&](std::size_t i) {
     // (k + 1: the point itself is among them)
     auto& list = neighbours[i];
     for(const auto& f : search.query(i, k > 0 ? k + 1 : 0, radius))
       if(f.second != i)
-      {
-        if(!(f.first > 0))
-        {
-          problems.code[i] = 1;
-          problems.other[i] = f.second;
-        }
         list.push_back(f.second);
-      }
     if(list.size() > (k > 0 ? k : list.size()))
       list.resize(k);  // the point itself was not among the k + 1 (it has duplicates)
   });
-  const std::size_t bad = problems.first();
-  if(bad < n)
-  {
-    std::ostringstream os;
-    os << "coincides with point " << problems.other[bad]
-       << " to double precision in a bounding box whose largest side is " << extent
-       << "; the package needs distinct points (CGAL::grid_simplify_point_set() merges duplicates; an outlier far"
-       << " from the others makes near points coincide)";
-    throw_point_error(bad, os.str());
-  }
   return neighbours;
+}
+
+// Throws, naming the point, if two points coincide, or if the neighbourhood of a point
+// is too small for the normalised frame of `mesh` to resolve it: its farthest neighbour
+// within 2^smallest_resolved_exponent of the frame's unit. A point far from all the
+// others stretches the box so that the others' neighbourhoods shrink to nothing: at
+// 5.6e78 among points 1 apart, their coordinates along it round to one value, and
+// CGAL's jet fitting divides by their spread. The message then names the point
+// farthest from its nearest neighbour, the one to remove.
+inline void check_resolved_neighbourhoods(const Indexed_mesh& mesh,
+                                          const std::vector<std::vector<std::size_t> >& neighbours, double extent)
+{
+  const std::vector<Eigen::Vector3d>& points = mesh.points;
+  const std::size_t n = points.size();
+  std::size_t bad = n, farthest = n;
+  double bad_radius = 0, farthest_distance = 0;
+  for(std::size_t i = 0; i < n; ++i)
+  {
+    if(neighbours[i].empty())
+      continue;
+    double radius = 0;
+    for(std::size_t j : neighbours[i])
+      radius = (std::max)(radius, (points[j] - points[i]).norm());
+    if(bad == n && radius < std::ldexp(1., smallest_resolved_exponent))
+    {
+      bad = i;
+      bad_radius = radius;
+    }
+    const double nearest = (points[neighbours[i].front()] - points[i]).norm();
+    if(nearest > farthest_distance)
+    {
+      farthest_distance = nearest;
+      farthest = i;
+    }
+  }
+  if(bad == n)
+  {
+    for(std::size_t i = 0; i < n; ++i)
+      if(!neighbours[i].empty() && points[neighbours[i].front()] == points[i])
+      {
+        std::ostringstream os;
+        os << "coincides with point " << neighbours[i].front() << "; the package needs distinct points"
+           << " (CGAL::grid_simplify_point_set() merges duplicates)";
+        throw_point_error(i, os.str());
+      }
+    return;
+  }
+  // (in user units: the frame scales by 2^scale_exponent)
+  std::ostringstream os;
+  os << "has its " << neighbours[bad].size() << " neighbours within " << std::ldexp(bad_radius, -mesh.scale_exponent)
+     << " of it, too close for double precision to resolve in a bounding box whose largest side is " << extent
+     << " (their distances must be at least " << std::ldexp(1., smallest_resolved_exponent)
+     << " of its half diagonal); point " << farthest << ", at " << std::ldexp(farthest_distance, -mesh.scale_exponent)
+     << " from its nearest neighbour, is the farthest from the others: a point far from all the others stretches"
+     << " the box (remove it)";
+  throw_point_error(bad, os.str());
 }
 
 // The fan of point i: the neighbours of its Delaunay triangulation among `neighbours`
@@ -390,7 +424,8 @@ inline Point_set_neighbourhoods prepare_point_set(std::vector<Eigen::Vector3d> u
 
   // (released before the normals are estimated, which build trees of their own)
   std::unique_ptr<const Point_neighbour_search> search(new Point_neighbour_search(p));
-  result.neighbours = find_neighbours(*search, n, options.k, radius, 2 * (0.5 * hi - 0.5 * lo).maxCoeff());
+  const double extent = 2 * (0.5 * hi - 0.5 * lo).maxCoeff();
+  result.neighbours = find_neighbours(*search, n, options.k, radius);
   for(std::size_t i = 0; i < n; ++i)
     if(result.neighbours[i].size() < 2)  // (only with a radius: else there are k >= 2)
     {
@@ -398,6 +433,7 @@ inline Point_set_neighbourhoods prepare_point_set(std::vector<Eigen::Vector3d> u
       os << "has " << result.neighbours[i].size() << " neighbour(s) within the neighbor_radius; a fan needs 2";
       throw_point_error(i, os.str());
     }
+  check_resolved_neighbourhoods(mesh, result.neighbours, extent);
   if(given_normals)
   {
     result.normals = std::move(user_normals);
