@@ -36,7 +36,7 @@ expect 2 "--times must be a number > 0 and <= 1000, not '0'" -- "$bin/benchmark_
 expect 2 "--noise must be a number > 0 and <= 10, not 'abc'" -- "$bin/benchmark_denoising" --noise abc
 expect 2 "--noise must be a number > 0" -- "$bin/benchmark_denoising" --noise 0.3 --noise -0.1
 expect 2 "--half takes tune or check, not 'both'" -- "$bin/benchmark_denoising" --half both
-expect 2 "--gaussian and --impulsive exclude each other" -- "$bin/benchmark_denoising" --gaussian --impulsive
+expect 2 "--baselines: unknown baseline 'NLLR'" -- "$bin/benchmark_denoising" --baselines GNF,NLLR
 expect 2 "--points must be a whole number from 100" -- "$bin/benchmark_point_set_denoising" --points 10
 expect 2 "--noise must be a number > 0 and <= 10, not '20'" -- "$bin/benchmark_point_set_denoising" --noise 0.5,20
 expect 2 '--meshes needs at least one mesh' -- "$bin/benchmark_point_set_denoising" --meshes ,
